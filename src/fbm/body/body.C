@@ -1,0 +1,184 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "body.H"
+#include "fvMesh.H"
+#include "treeBoundBox.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::body::body
+(
+    const word& name,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    name_(name),
+    dict_(dict),
+    shape_(bodyShape::New(dict, mesh)),
+    rho_(dict.getCheck<scalar>("rho", [](scalar r){ return r > 0; })),
+    centre_(dict.get<point>("centre")),
+    U_(dict.get<vector>("U")),
+    omega_(dict.get<vector>("omega")),
+    fixed_(dict.get<bool>("fixed")),
+    coeffs_(dict.found("coefficients")),
+    magUInf_(1),
+    Aref_(1),
+    dragDir_(1, 0, 0),
+    liftDir_(0, 1, 0),
+    force_(Zero),
+    torque_(Zero)
+{
+    if (!fixed_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << name_ << ": 'fixed false' (free motion) is not"
+            << " available in this version; set 'fixed true;'"
+            << exit(FatalIOError);
+    }
+
+    if (coeffs_)
+    {
+        const dictionary& cDict = dict.subDict("coefficients");
+        magUInf_ =
+            cDict.getCheck<scalar>("magUInf", [](scalar u){ return u > 0; });
+        Aref_ = cDict.getCheck<scalar>("Aref", [](scalar a){ return a > 0; });
+        dragDir_ = cDict.get<vector>("dragDir");
+        liftDir_ = cDict.get<vector>("liftDir");
+        if (mag(dragDir_) < SMALL || mag(liftDir_) < SMALL)
+        {
+            FatalIOErrorInFunction(cDict)
+                << "Body " << name_ << ": dragDir and liftDir must be"
+                << " non-zero vectors" << exit(FatalIOError);
+        }
+        dragDir_ /= mag(dragDir_);
+        liftDir_ /= mag(liftDir_);
+    }
+
+    // In 2D the centre's empty component is put mid-depth
+    const Vector<label>& sd = mesh.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0)
+        {
+            centre_[d] = mesh.bounds().centre()[d];
+        }
+    }
+
+    // The centre must lie in the mesh (on some processor)
+    const bool found = (mesh.findCell(centre_) != -1);
+    if (!returnReduce(found, orOp<bool>()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << name_ << ": centre " << centre_
+            << " is outside the mesh (bounds " << mesh.bounds() << ")"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::body::Cd(const scalar rhoFluid) const
+{
+    return (force_ & dragDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
+}
+
+
+Foam::scalar Foam::fbm::body::Cl(const scalar rhoFluid) const
+{
+    return (force_ & liftDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
+}
+
+
+void Foam::fbm::body::updateCells
+(
+    const fvMesh& mesh,
+    const List<boundBox>& cellBb,
+    const label nSubdivision
+)
+{
+    // Candidate cells: those whose bounding box meets the body's
+    const vector h(shape_->halfExtent());
+    boundBox bb(centre_ - h, centre_ + h);
+    const boundBox& meshBb = mesh.bounds();
+    bb.min() = max(bb.min(), meshBb.min() - meshBb.span()*1e-6);
+    bb.max() = min(bb.max(), meshBb.max() + meshBb.span()*1e-6);
+
+    const labelList candidates
+    (
+        mesh.cellTree().findBox(treeBoundBox(bb.min(), bb.max()))
+    );
+
+    DynamicList<label> cells(candidates.size());
+    DynamicList<scalar> alpha(candidates.size());
+
+    for (const label celli : candidates)
+    {
+        const boundBox& cbb = cellBb[celli];
+        const scalar a = shape_->boxFraction
+        (
+            boundBox(cbb.min() - centre_, cbb.max() - centre_),
+            nSubdivision
+        );
+        if (a > 0)
+        {
+            cells.append(celli);
+            alpha.append(a);
+        }
+    }
+
+    cells_.transfer(cells);
+    alpha_.transfer(alpha);
+
+    // Band where grad(alpha) is non-zero: every cell whose alpha differs
+    // from a face neighbour's, and those neighbours
+    Map<scalar> alphaOf(2*cells_.size());
+    forAll(cells_, i)
+    {
+        alphaOf.insert(cells_[i], alpha_[i]);
+    }
+
+    const labelListList& cellCells = mesh.cellCells();
+    labelHashSet band(2*cells_.size());
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        bool edge = (alpha_[i] < 1);
+        if (!edge)
+        {
+            for (const label nbr : cellCells[celli])
+            {
+                if (alphaOf.lookup(nbr, 0) != alpha_[i])
+                {
+                    edge = true;
+                    break;
+                }
+            }
+        }
+        if (edge)
+        {
+            band.insert(celli);
+            band.insert(cellCells[celli]);
+        }
+    }
+    bandCells_ = band.sortedToc();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,121 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "bodyShape.H"
+#include "polyMesh.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+    defineTypeNameAndDebug(bodyShape, 0);
+    defineRunTimeSelectionTable(bodyShape, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::bodyShape::bodyShape
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+:
+    dict_(dict),
+    solutionD_(mesh.solutionD()),
+    depth_(1)
+{
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solutionD_[d] < 0)
+        {
+            depth_ = mesh.bounds().span()[d];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::bodyShape::boxFraction
+(
+    const boundBox& bb,
+    const label nSubdivision
+) const
+{
+    const vector c(inPlane(bb.centre()));
+    const vector half(inPlane(0.5*bb.span()));
+    const scalar d = signedDistance(c);
+    const scalar halfDiag = mag(half);
+
+    if (d <= -halfDiag)
+    {
+        return 1;
+    }
+    if (d >= halfDiag)
+    {
+        return 0;
+    }
+
+    if (nSubdivision <= 0)
+    {
+        // Leaf: fraction of the box behind the tangent plane at the centre
+        const vector n(normal(c));
+        scalar width = 0;
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            width += 2*half[i]*mag(n[i]);
+        }
+        if (width < VSMALL)
+        {
+            return d < 0 ? 1 : 0;
+        }
+        return max(scalar(0), min(scalar(1), 0.5 - d/width));
+    }
+
+    // Split along every solution direction and average the children
+    scalar sum = 0;
+    label nChildren = 0;
+    const point& lo = bb.min();
+    const point mid(bb.centre());
+    const point& hi = bb.max();
+
+    for (label child = 0; child < 8; ++child)
+    {
+        point cMin(lo), cMax(hi);
+        bool used = true;
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            const bool upper = (child >> i) & 1;
+            if (solutionD_[i] < 0)
+            {
+                // Empty direction: not split, only the first half is used
+                if (upper) used = false;
+                continue;
+            }
+            if (upper) cMin[i] = mid[i]; else cMax[i] = mid[i];
+        }
+        if (used)
+        {
+            sum += boxFraction(boundBox(cMin, cMax), nSubdivision - 1);
+            ++nChildren;
+        }
+    }
+
+    return sum/nChildren;
+}
+
+
+// ************************************************************************* //

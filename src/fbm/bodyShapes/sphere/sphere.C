@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "sphere.H"
+#include "polyMesh.H"
+#include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace bodyShapes
+{
+    defineTypeNameAndDebug(sphere, 0);
+    addToRunTimeSelectionTable(bodyShape, sphere, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::bodyShapes::sphere::sphere
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+:
+    bodyShape(dict, mesh),
+    radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; }))
+{
+    if (mesh.nSolutionD() != 3)
+    {
+        FatalIOErrorInFunction(dict)
+            << "A sphere needs a 3D mesh, this mesh has "
+            << mesh.nSolutionD() << " solution directions:"
+            << " use 'type circle;' in 2D"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::bodyShapes::sphere::signedDistance
+(
+    const vector& r
+) const
+{
+    return mag(r) - radius_;
+}
+
+
+Foam::vector Foam::fbm::bodyShapes::sphere::normal(const vector& r) const
+{
+    const scalar m = mag(r);
+    if (m < VSMALL)
+    {
+        return vector(1, 1, 1)/sqrt(3.0);
+    }
+    return r/m;
+}
+
+
+Foam::vector Foam::fbm::bodyShapes::sphere::halfExtent() const
+{
+    return vector(radius_, radius_, radius_);
+}
+
+
+Foam::scalar Foam::fbm::bodyShapes::sphere::volume() const
+{
+    return 4.0/3.0*constant::mathematical::pi*pow3(radius_);
+}
+
+
+Foam::symmTensor Foam::fbm::bodyShapes::sphere::inertiaPerDensity() const
+{
+    return symmTensor::I*(0.4*volume()*sqr(radius_));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,317 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fictitiousBoundary.H"
+#include "fvMatrices.H"
+#include "Time.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+    defineTypeNameAndDebug(fictitiousBoundary, 0);
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fbm::fictitiousBoundary::updateFields()
+{
+    // Clear the previous footprint
+    scalarField& alpha = alpha_.primitiveFieldRef();
+    vectorField& Us = Us_.primitiveFieldRef();
+    for (const label celli : activeCells_)
+    {
+        alpha[celli] = 0;
+        Us[celli] = Zero;
+        alphaSum_[celli] = 0;
+        lambda_[celli] = 0;
+    }
+
+    const vectorField& C = mesh_.C();
+    labelHashSet active;
+
+    for (body& b : bodies_)
+    {
+        b.updateCells(mesh_, cellBb_, nSubdivision_);
+
+        const labelList& cells = b.cells();
+        const scalarList& a = b.alpha();
+        forAll(cells, i)
+        {
+            const label celli = cells[i];
+            alpha[celli] += a[i];
+            Us[celli] += a[i]*b.velocityAt(C[celli]);
+            active.insert(celli);
+        }
+    }
+
+    activeCells_ = active.sortedToc();
+
+    // alpha-weighted mean velocity where bodies share a cell, alpha <= 1
+    for (const label celli : activeCells_)
+    {
+        Us[celli] /= alpha[celli];
+        alphaSum_[celli] = alpha[celli];
+        alpha[celli] = min(alpha[celli], scalar(1));
+    }
+
+    alpha_.correctBoundaryConditions();
+    Us_.correctBoundaryConditions();
+}
+
+
+void Foam::fbm::fictitiousBoundary::createFiles()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const Time& runTime = mesh_.time();
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"fbmBodies"
+       /runTime.timeName(runTime.startTime().value())
+    );
+    mkDir(dir);
+
+    files_.setSize(bodies_.size());
+    forAll(bodies_, bi)
+    {
+        const body& b = bodies_[bi];
+        files_.set(bi, new OFstream(dir/(b.name() + ".dat")));
+        OFstream& os = files_[bi];
+        os.precision(12);
+        os  << "# Body " << b.name() << ": hydrodynamic force [N] and"
+            << " torque about the centre [N m]" << nl
+            << "# Time Fx Fy Fz Tx Ty Tz";
+        if (b.hasCoefficients())
+        {
+            os  << " Cd Cl";
+        }
+        os  << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "fbmProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    rhoFluid_(getCheck<scalar>("rhoFluid", [](scalar r){ return r > 0; })),
+    nSubdivision_
+    (
+        getCheckOrDefault<label>
+        (
+            "nSubdivision", 4, [](label n){ return n >= 0 && n <= 10; }
+        )
+    ),
+    penaltyMax_
+    (
+        getCheckOrDefault<scalar>
+        (
+            "penaltyMax", 1e6, [](scalar k){ return k >= 10; }
+        )
+    ),
+    bodies_(),
+    cellBb_(mesh.nCells()),
+    alpha_
+    (
+        IOobject
+        (
+            "alpha.solid",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero)
+    ),
+    Us_
+    (
+        IOobject
+        (
+            "U.solid",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    ),
+    activeCells_(),
+    alphaSum_(mesh.nCells(), Zero),
+    lambda_(mesh.nCells(), Zero),
+    scratch_(mesh.nCells(), Zero),
+    forceModel_(forceModel::New(*this))
+{
+    const dictionary& bodiesDict = subDict("bodies");
+
+    label n = 0;
+    for (const entry& e : bodiesDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(bodiesDict)
+                << "Entry '" << e.keyword() << "' in bodies is not a"
+                << " dictionary" << exit(FatalIOError);
+        }
+        ++n;
+    }
+
+    bodies_.setSize(n);
+    n = 0;
+    for (const entry& e : bodiesDict)
+    {
+        bodies_.set(n++, new body(e.keyword(), e.dict(), mesh));
+    }
+
+    // Cell bounding boxes, once
+    const pointField& pts = mesh.points();
+    const labelListList& cellPts = mesh.cellPoints();
+    forAll(cellBb_, celli)
+    {
+        cellBb_[celli] = boundBox(pts, cellPts[celli], false);
+    }
+
+    Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
+        << ", nSubdivision " << nSubdivision_
+        << ", penaltyMax " << penaltyMax_ << nl;
+
+    updateFields();
+
+    // Each body must lie in the fluid domain: its covered volume must be
+    // its own (a body cut by the boundary is an input error)
+    for (const body& b : bodies_)
+    {
+        scalar vol = 0;
+        forAll(b.cells(), i)
+        {
+            vol += b.alpha()[i]*mesh.V()[b.cells()[i]];
+        }
+        reduce(vol, sumOp<scalar>());
+        const scalar V = b.shape().volume();
+        Info<< "    " << b.name() << ": " << b.shape().type()
+            << " centre " << b.centre() << " volume " << V
+            << ", covered volume " << vol << " ("
+            << returnReduce(b.cells().size(), sumOp<label>())
+            << " cells)" << nl;
+
+        if (mag(vol - V) > 1e-3*V)
+        {
+            FatalIOErrorInFunction(b.dict())
+                << "Body " << b.name() << " (centre " << b.centre()
+                << ") is not wholly inside the mesh: covered volume " << vol
+                << " against " << V << " for the shape"
+                << exit(FatalIOError);
+        }
+    }
+    Info<< endl;
+
+    createFiles();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
+{
+    scalarField& diag = UEqn.diag();
+    vectorField& source = UEqn.source();
+    const scalarField& alpha = alpha_;
+    const vectorField& Us = Us_;
+
+    for (const label celli : activeCells_)
+    {
+        const scalar a = alpha[celli];
+        const scalar k = (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
+        const scalar lambda = k*diag[celli];
+        diag[celli] += lambda;
+        lambda_[celli] = lambda;
+        source[celli] += lambda*Us[celli];
+    }
+}
+
+
+void Foam::fbm::fictitiousBoundary::correctForces
+(
+    const volVectorField& U,
+    const volScalarField& p,
+    const volScalarField& nuEff
+)
+{
+    if (bodies_.empty())
+    {
+        return;
+    }
+
+    List<vector> force(bodies_.size(), Zero);
+    List<vector> torque(bodies_.size(), Zero);
+    forceModel_->calcForces(*this, U, p, nuEff, force, torque);
+
+    // Sum the processors' parts
+    Pstream::listCombineGather(force, plusEqOp<vector>());
+    Pstream::listCombineScatter(force);
+    Pstream::listCombineGather(torque, plusEqOp<vector>());
+    Pstream::listCombineScatter(torque);
+
+    const scalar t = mesh_.time().value();
+    forAll(bodies_, bi)
+    {
+        body& b = bodies_[bi];
+        b.setForce(force[bi], torque[bi]);
+
+        Info<< "fbm: " << b.name() << " F = " << b.force()
+            << " T = " << b.torque();
+        if (b.hasCoefficients())
+        {
+            Info<< " Cd = " << b.Cd(rhoFluid_) << " Cl = " << b.Cl(rhoFluid_);
+        }
+        Info<< nl;
+
+        if (Pstream::master())
+        {
+            OFstream& os = files_[bi];
+            const vector& F = b.force();
+            const vector& T = b.torque();
+            os  << t << ' ' << F.x() << ' ' << F.y() << ' ' << F.z()
+                << ' ' << T.x() << ' ' << T.y() << ' ' << T.z();
+            if (b.hasCoefficients())
+            {
+                os  << ' ' << b.Cd(rhoFluid_) << ' ' << b.Cl(rhoFluid_);
+            }
+            os  << endl;
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "momentumExchange.H"
+#include "fictitiousBoundary.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace forceModels
+{
+    defineTypeNameAndDebug(momentumExchange, 0);
+    addToRunTimeSelectionTable(forceModel, momentumExchange, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::forceModels::momentumExchange::momentumExchange
+(
+    const dictionary& dict
+)
+:
+    forceModel(dict)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::forceModels::momentumExchange::calcForces
+(
+    const fictitiousBoundary& fb,
+    const volVectorField& U,
+    const volScalarField& p,
+    const volScalarField& nuEff,
+    List<vector>& force,
+    List<vector>& torque
+) const
+{
+    const PtrList<body>& bodies = fb.bodies();
+    const scalar rhoFluid = fb.rhoFluid();
+    const vectorField& C = fb.mesh().C().primitiveField();
+    const scalarField& lambda = fb.lambda();
+    const scalarField& alphaSum = fb.alphaSum();
+    const vectorField& Us = fb.Us().primitiveField();
+
+    forAll(bodies, bi)
+    {
+        const body& b = bodies[bi];
+        const labelList& cells = b.cells();
+        const scalarList& alpha = b.alpha();
+
+        vector F(Zero);
+        vector T(Zero);
+
+        forAll(cells, i)
+        {
+            const label celli = cells[i];
+            const vector f
+            (
+                rhoFluid*(alpha[i]/alphaSum[celli])*lambda[celli]
+               *(U[celli] - Us[celli])
+            );
+            F += f;
+            T += (C[celli] - b.centre()) ^ f;
+        }
+
+        // Bodies at constant velocity: the enclosed fluid's momentum does
+        // not change (moving bodies add rho_f V dU/dt, rho_f I_f domega/dt)
+
+        force[bi] = F;
+        torque[bi] = T;
+    }
+}
+
+
+// ************************************************************************* //
