@@ -70,13 +70,29 @@ Foam::fbm::body::body
         liftDir_ /= mag(liftDir_);
     }
 
-    // In 2D the centre's empty component is put mid-depth
+    // In 2D the centre's empty component is put mid-depth; the motion
+    // must stay in the plane
     const Vector<label>& sd = mesh.solutionD();
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (sd[d] < 0)
         {
             centre_[d] = mesh.bounds().centre()[d];
+
+            if (mag(U_[d]) > 0)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Body " << name_ << ": U " << U_ << " has a component"
+                    << " in the empty direction of this 2D mesh"
+                    << exit(FatalIOError);
+            }
+        }
+        else if (mesh.nSolutionD() == 2 && mag(omega_[d]) > 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << name_ << ": omega " << omega_ << " must be"
+                << " along the empty direction of this 2D mesh"
+                << exit(FatalIOError);
         }
     }
 

@@ -1,0 +1,72 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+Application
+    Test-volumeFraction
+
+Description
+    The solid volume fraction summed over the cells, sum(alpha V), against
+    the shape's exact volume (pi R^2 depth for a circle, 4/3 pi R^3 for a
+    sphere), and alpha within [0, 1]. The relative tolerance is an option
+    (the runner gives a tighter one on finer meshes).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "fictitiousBoundary.H"
+#include "fbmTest.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addOption("tol", "scalar", "relative tolerance on the volume");
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const scalar tol = args.get<scalar>("tol");
+
+    fbm::fictitiousBoundary fb(mesh);
+
+    for (const fbm::body& b : fb.bodies())
+    {
+        scalar vol = 0;
+        scalar aMin = 1, aMax = 0;
+        forAll(b.cells(), i)
+        {
+            const scalar a = b.alpha()[i];
+            vol += a*mesh.V()[b.cells()[i]];
+            aMin = min(aMin, a);
+            aMax = max(aMax, a);
+        }
+        const scalar V = b.shape().volume();
+
+        const scalar h =
+            mesh.nSolutionD() == 2
+          ? Foam::sqrt(mesh.V()[0]/mesh.bounds().span().z())
+          : Foam::cbrt(mesh.V()[0]);
+        Info<< b.name() << ": " << mesh.nCells() << " cells, R/h = "
+            << b.shape().radius()/h << nl;
+        fbmTest::check("relative volume error", (vol - V)/V, 0, tol);
+        fbmTest::check("min alpha >= 0", min(aMin, scalar(0)), 0, 0);
+        fbmTest::check("max alpha <= 1", max(aMax, scalar(1)), 1, 0);
+
+        // The total field agrees with the body's list
+        fbmTest::check
+        (
+            "sum(alpha.solid V) = body volume",
+            (gSum(fb.alpha().primitiveField()*mesh.V()) - vol)/V, 0, 1e-12
+        );
+    }
+
+    return fbmTest::result();
+}
+
+
+// ************************************************************************* //
