@@ -25,6 +25,16 @@ namespace fbm
 }
 }
 
+const Foam::Enum
+<
+    Foam::fbm::fictitiousBoundary::forcingType
+>
+Foam::fbm::fictitiousBoundary::forcingTypeNames
+({
+    { forcingType::volumeFraction, "volumeFraction" },
+    { forcingType::linearProfile, "linearProfile" },
+});
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -33,19 +43,23 @@ void Foam::fbm::fictitiousBoundary::updateFields()
     // Clear the previous footprint
     scalarField& alpha = alpha_.primitiveFieldRef();
     vectorField& Us = Us_.primitiveFieldRef();
+    scalarField& id = bodyID_.primitiveFieldRef();
     for (const label celli : activeCells_)
     {
         alpha[celli] = 0;
         Us[celli] = Zero;
-        alphaSum_[celli] = 0;
+        id[celli] = -1;
+        distance_[celli] = GREAT;
         lambda_[celli] = 0;
     }
 
     const vectorField& C = mesh_.C();
+    const labelListList& cellCells = mesh_.cellCells();
     labelHashSet active;
 
-    for (body& b : bodies_)
+    forAll(bodies_, bi)
     {
+        body& b = bodies_[bi];
         b.updateCells(mesh_, cellBb_, nSubdivision_);
 
         const labelList& cells = b.cells();
@@ -53,24 +67,59 @@ void Foam::fbm::fictitiousBoundary::updateFields()
         forAll(cells, i)
         {
             const label celli = cells[i];
-            alpha[celli] += a[i];
-            Us[celli] += a[i]*b.velocityAt(C[celli]);
-            active.insert(celli);
+            if (forcing_ == forcingType::volumeFraction)
+            {
+                // The body with the largest fraction gives u_s
+                if (a[i] > alpha[celli])
+                {
+                    Us[celli] = b.velocityAt(C[celli]);
+                    id[celli] = bi;
+                }
+                active.insert(celli);
+            }
+            alpha[celli] = min(alpha[celli] + a[i], scalar(1));
+        }
+
+        if (forcing_ == forcingType::linearProfile)
+        {
+            // Cells with the centre inside and their face neighbours; the
+            // nearest surface gives u_s
+            const bodyShape& shape = b.shape();
+            auto mark = [&](const label celli, const scalar d)
+            {
+                if (d < distance_[celli])
+                {
+                    distance_[celli] = d;
+                    Us[celli] = b.velocityAt(C[celli]);
+                    id[celli] = bi;
+                }
+                active.insert(celli);
+            };
+
+            for (const label celli : cells)
+            {
+                const scalar d = shape.signedDistance(C[celli] - b.centre());
+                if (d <= 0)
+                {
+                    mark(celli, d);
+                    for (const label nbr : cellCells[celli])
+                    {
+                        mark
+                        (
+                            nbr,
+                            shape.signedDistance(C[nbr] - b.centre())
+                        );
+                    }
+                }
+            }
         }
     }
 
     activeCells_ = active.sortedToc();
 
-    // alpha-weighted mean velocity where bodies share a cell, alpha <= 1
-    for (const label celli : activeCells_)
-    {
-        Us[celli] /= alpha[celli];
-        alphaSum_[celli] = alpha[celli];
-        alpha[celli] = min(alpha[celli], scalar(1));
-    }
-
     alpha_.correctBoundaryConditions();
     Us_.correctBoundaryConditions();
+    bodyID_.correctBoundaryConditions();
 }
 
 
@@ -125,6 +174,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     ),
     mesh_(mesh),
     rhoFluid_(getCheck<scalar>("rhoFluid", [](scalar r){ return r > 0; })),
+    forcing_(forcingTypeNames.get("forcing", *this)),
     nSubdivision_
     (
         getCheckOrDefault<label>
@@ -168,7 +218,20 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         dimensionedVector(dimVelocity, Zero)
     ),
     activeCells_(),
-    alphaSum_(mesh.nCells(), Zero),
+    bodyID_
+    (
+        IOobject
+        (
+            "bodyID",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("bodyID", dimless, -1)
+    ),
+    distance_(mesh.nCells(), GREAT),
     lambda_(mesh.nCells(), Zero),
     scratch_(mesh.nCells(), Zero),
     forceModel_(forceModel::New(*this))
@@ -203,6 +266,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     }
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
+        << ", forcing " << forcingTypeNames[forcing_]
         << ", nSubdivision " << nSubdivision_
         << ", penaltyMax " << penaltyMax_ << nl;
 
@@ -249,14 +313,59 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
     const scalarField& alpha = alpha_;
     const vectorField& Us = Us_;
 
+    if (forcing_ == forcingType::volumeFraction)
+    {
+        for (const label celli : activeCells_)
+        {
+            const scalar a = alpha[celli];
+            const scalar k =
+                (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
+            lambda_[celli] = k*diag[celli];
+        }
+    }
+    else
+    {
+        const lduMatrix& m = UEqn;
+        const scalarField& upper = m.upper();
+        const scalarField& lower = m.lower();
+        const labelUList& own = mesh_.faceOwner();
+        const labelUList& nei = mesh_.faceNeighbour();
+        const cellList& cellFaces = mesh_.cells();
+        const label nInternal = mesh_.nInternalFaces();
+
+        for (const label celli : activeCells_)
+        {
+            const scalar d = distance_[celli];
+            scalar k = penaltyMax_;
+
+            if (d > 0)
+            {
+                // S = sum over inside neighbours of a_N/a_P |d_N|
+                scalar S = 0;
+                for (const label facei : cellFaces[celli])
+                {
+                    if (facei >= nInternal) continue;
+
+                    const bool isOwner = (own[facei] == celli);
+                    const label nbr = isOwner ? nei[facei] : own[facei];
+                    if (distance_[nbr] <= 0)
+                    {
+                        const scalar aN =
+                            -(isOwner ? upper[facei] : lower[facei]);
+                        S += max(aN, scalar(0))*(-distance_[nbr]);
+                    }
+                }
+                S /= diag[celli];
+                k = (S > 0) ? min(S/d, penaltyMax_) : 0;
+            }
+            lambda_[celli] = k*diag[celli];
+        }
+    }
+
     for (const label celli : activeCells_)
     {
-        const scalar a = alpha[celli];
-        const scalar k = (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
-        const scalar lambda = k*diag[celli];
-        diag[celli] += lambda;
-        lambda_[celli] = lambda;
-        source[celli] += lambda*Us[celli];
+        diag[celli] += lambda_[celli];
+        source[celli] += lambda_[celli]*Us[celli];
     }
 }
 

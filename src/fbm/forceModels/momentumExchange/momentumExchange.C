@@ -56,36 +56,24 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
     const scalar rhoFluid = fb.rhoFluid();
     const vectorField& C = fb.mesh().C().primitiveField();
     const scalarField& lambda = fb.lambda();
-    const scalarField& alphaSum = fb.alphaSum();
+    const scalarField& bodyID = fb.bodyID().primitiveField();
     const vectorField& Us = fb.Us().primitiveField();
 
-    forAll(bodies, bi)
+    force = Zero;
+    torque = Zero;
+
+    for (const label celli : fb.activeCells())
     {
-        const body& b = bodies[bi];
-        const labelList& cells = b.cells();
-        const scalarList& alpha = b.alpha();
+        const label bi = label(bodyID[celli]);
+        if (bi < 0) continue;
 
-        vector F(Zero);
-        vector T(Zero);
-
-        forAll(cells, i)
-        {
-            const label celli = cells[i];
-            const vector f
-            (
-                rhoFluid*(alpha[i]/alphaSum[celli])*lambda[celli]
-               *(U[celli] - Us[celli])
-            );
-            F += f;
-            T += (C[celli] - b.centre()) ^ f;
-        }
-
-        // Bodies at constant velocity: the enclosed fluid's momentum does
-        // not change (moving bodies add rho_f V dU/dt, rho_f I_f domega/dt)
-
-        force[bi] = F;
-        torque[bi] = T;
+        const vector f(rhoFluid*lambda[celli]*(U[celli] - Us[celli]));
+        force[bi] += f;
+        torque[bi] += (C[celli] - bodies[bi].centre()) ^ f;
     }
+
+    // Bodies at constant velocity: the enclosed fluid's momentum does not
+    // change (moving bodies add rho_f V dU/dt, rho_f I_f domega/dt)
 }
 
 
