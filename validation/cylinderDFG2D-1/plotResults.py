@@ -63,7 +63,7 @@ def fmt(value, digits):
 
 
 def fmt_err(value):
-    return "-" if math.isnan(value) else f"{value:+.2f}"
+    return "-" if math.isnan(value) else f"{value:+.3f}"
 
 
 def load(results_path):
