@@ -110,15 +110,23 @@ Foam::fbm::body::body
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::fbm::body::Cd(const scalar rhoFluid) const
+Foam::scalar Foam::fbm::body::Cd
+(
+    const scalar rhoFluid,
+    const vector& F
+) const
 {
-    return (force_ & dragDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
+    return (F & dragDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
 }
 
 
-Foam::scalar Foam::fbm::body::Cl(const scalar rhoFluid) const
+Foam::scalar Foam::fbm::body::Cl
+(
+    const scalar rhoFluid,
+    const vector& F
+) const
 {
-    return (force_ & liftDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
+    return (F & liftDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
 }
 
 

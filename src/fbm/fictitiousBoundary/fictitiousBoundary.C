@@ -138,15 +138,23 @@ void Foam::fbm::fictitiousBoundary::createFiles()
     );
     mkDir(dir);
 
-    files_.setSize(bodies_.size());
-    forAll(bodies_, bi)
+    const label nModels = 1 + compareModels_.size();
+    files_.setSize(nModels*bodies_.size());
+    forAll(files_, filei)
     {
-        const body& b = bodies_[bi];
-        files_.set(bi, new OFstream(dir/(b.name() + ".dat")));
-        OFstream& os = files_[bi];
+        const label mi = filei/bodies_.size();
+        const body& b = bodies_[filei % bodies_.size()];
+        const word suffix
+        (
+            mi == 0 ? word::null : word("." + compareModels_[mi - 1].type())
+        );
+        files_.set(filei, new OFstream(dir/(b.name() + suffix + ".dat")));
+        OFstream& os = files_[filei];
         os.precision(12);
         os  << "# Body " << b.name() << ": hydrodynamic force [N] and"
-            << " torque about the centre [N m]" << nl
+            << " torque about the centre [N m], force model "
+            << (mi == 0 ? forceModel_->type() : compareModels_[mi - 1].type())
+            << nl
             << "# Time Fx Fy Fz Tx Ty Tz";
         if (b.hasCoefficients())
         {
@@ -234,7 +242,8 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     distance_(mesh.nCells(), GREAT),
     lambda_(mesh.nCells(), Zero),
     scratch_(mesh.nCells(), Zero),
-    forceModel_(forceModel::New(*this))
+    forceModel_(forceModel::New(*this)),
+    compareModels_()
 {
     const dictionary& bodiesDict = subDict("bodies");
 
@@ -269,6 +278,19 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         << ", forcing " << forcingTypeNames[forcing_]
         << ", nSubdivision " << nSubdivision_
         << ", penaltyMax " << penaltyMax_ << nl;
+
+    const wordList extra
+    (
+        getOrDefault<wordList>("compareForceModels", wordList())
+    );
+    compareModels_.setSize(extra.size());
+    forAll(extra, i)
+    {
+        dictionary d;
+        d.add("forceModel", extra[i]);
+        d.name() = this->name();
+        compareModels_.set(i, forceModel::New(d));
+    }
 
     updateFields();
 
@@ -370,6 +392,49 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
 }
 
 
+void Foam::fbm::fictitiousBoundary::calcForces
+(
+    const forceModel& model,
+    const volVectorField& U,
+    const volScalarField& p,
+    const volScalarField& nuEff,
+    List<vector>& force,
+    List<vector>& torque
+) const
+{
+    force.setSize(bodies_.size());
+    torque.setSize(bodies_.size());
+    force = Zero;
+    torque = Zero;
+    model.calcForces(*this, U, p, nuEff, force, torque);
+
+    // Sum the processors' parts
+    Pstream::listCombineGather(force, plusEqOp<vector>());
+    Pstream::listCombineScatter(force);
+    Pstream::listCombineGather(torque, plusEqOp<vector>());
+    Pstream::listCombineScatter(torque);
+}
+
+
+void Foam::fbm::fictitiousBoundary::writeLine
+(
+    OFstream& os,
+    const body& b,
+    const vector& F,
+    const vector& T
+) const
+{
+    os  << mesh_.time().value()
+        << ' ' << F.x() << ' ' << F.y() << ' ' << F.z()
+        << ' ' << T.x() << ' ' << T.y() << ' ' << T.z();
+    if (b.hasCoefficients())
+    {
+        os  << ' ' << b.Cd(rhoFluid_, F) << ' ' << b.Cl(rhoFluid_, F);
+    }
+    os  << endl;
+}
+
+
 void Foam::fbm::fictitiousBoundary::correctForces
 (
     const volVectorField& U,
@@ -382,17 +447,9 @@ void Foam::fbm::fictitiousBoundary::correctForces
         return;
     }
 
-    List<vector> force(bodies_.size(), Zero);
-    List<vector> torque(bodies_.size(), Zero);
-    forceModel_->calcForces(*this, U, p, nuEff, force, torque);
+    List<vector> force, torque;
+    calcForces(forceModel_(), U, p, nuEff, force, torque);
 
-    // Sum the processors' parts
-    Pstream::listCombineGather(force, plusEqOp<vector>());
-    Pstream::listCombineScatter(force);
-    Pstream::listCombineGather(torque, plusEqOp<vector>());
-    Pstream::listCombineScatter(torque);
-
-    const scalar t = mesh_.time().value();
     forAll(bodies_, bi)
     {
         body& b = bodies_[bi];
@@ -408,16 +465,23 @@ void Foam::fbm::fictitiousBoundary::correctForces
 
         if (Pstream::master())
         {
-            OFstream& os = files_[bi];
-            const vector& F = b.force();
-            const vector& T = b.torque();
-            os  << t << ' ' << F.x() << ' ' << F.y() << ' ' << F.z()
-                << ' ' << T.x() << ' ' << T.y() << ' ' << T.z();
-            if (b.hasCoefficients())
+            writeLine(files_[bi], b, b.force(), b.torque());
+        }
+    }
+
+    forAll(compareModels_, mi)
+    {
+        calcForces(compareModels_[mi], U, p, nuEff, force, torque);
+        if (Pstream::master())
+        {
+            forAll(bodies_, bi)
             {
-                os  << ' ' << b.Cd(rhoFluid_) << ' ' << b.Cl(rhoFluid_);
+                writeLine
+                (
+                    files_[(mi + 1)*bodies_.size() + bi],
+                    bodies_[bi], force[bi], torque[bi]
+                );
             }
-            os  << endl;
         }
     }
 }
