@@ -2,19 +2,27 @@
 """Tabulate and plot the DFG 2D-1 mesh study of fbmFoam.
 
 Reads results.csv (level,cells,cD,cL,dp,wall_s, one line per mesh level,
-written by ./Allrun) and the literature data in validationData/, and writes
+written by ./Allrun; cD, cL by fbmFoam's force model, momentumExchange),
+optionally results-volumeIntegral.csv (same columns; cD, cL by the paper's
+volume integral, Eq. 14, written beside it through compareForceModels) and
+the literature data in validationData/, and writes
 
     table.md          our values and errors in % against the high-accuracy
-                      reference, with the paper's FEM-FBM Table 1 beside it
+                      reference, the volume-integral cD and cL beside them,
+                      and the paper's FEM-FBM Table 1 and body-fitted runs
     convergence.png   |error| in % of cD, cL and dp against cells and
-                      against fbmFoam wall time (log-log), with the paper's
-                      FEM-FBM cD errors and body-fitted OpenFOAM runs
+                      against fbmFoam wall time (log-log), with the
+                      volume-integral cD (dashed), the paper's FEM-FBM
+                      errors and body-fitted OpenFOAM runs
 
 Usage:
-    plotResults.py [-h] [-i results.csv] [-o DIR] [--check]
+    plotResults.py [-h] [-i results.csv] [-v results-volumeIntegral.csv]
+                   [-o DIR] [--check]
 
---check exits with status 1 unless the finest level is within the
-tolerances in TOLERANCE below.
+Without -v, results-volumeIntegral.csv beside the input is read if it
+exists. --check exits with status 1 unless the finest level of results.csv
+(not the volume integral) is within the tolerances in TOLERANCE below; it
+prints cL too.
 
 Run it with Debian's python3 (/usr/bin/python3, python3-matplotlib).
 """
@@ -35,8 +43,9 @@ DATA = os.path.join(HERE, "validationData")
 
 QUANTITIES = ("cD", "cL", "dp")
 
-# Accepted |error| in % at the finest level for --check
-TOLERANCE = {"cD": 1.0, "cL": 10.0, "dp": 2.0}
+# Accepted |error| in % at the finest level for --check (acceptance of the
+# validation issue); cL is printed but not checked
+TOLERANCE = {"cD": 1.0, "dp": 2.0}
 
 
 def read_csv(path):
@@ -66,18 +75,26 @@ def fmt_err(value):
     return "-" if math.isnan(value) else f"{value:+.3f}"
 
 
-def load(results_path):
+def load_results(path, reference):
+    """Rows of a results csv, with errors in %, sorted by cells."""
+    rows = []
+    for r in read_csv(path):
+        row = {k: number(r.get(k)) for k in ("level", "cells", "cD", "cL", "dp", "wall_s")}
+        for q in QUANTITIES:
+            row[q + "_err"] = error_pct(row[q], reference[q])
+        rows.append(row)
+    rows.sort(key=lambda r: r["cells"])
+    return rows
+
+
+def load(results_path, volume_integral_path):
     ref = {r["quantity"]: r for r in read_csv(os.path.join(DATA, "referenceValues.csv"))}
     reference = {q: float(ref[q]["value"]) for q in QUANTITIES}
     interval = {q: (float(ref[q]["low"]), float(ref[q]["high"])) for q in QUANTITIES}
 
-    ours = []
-    for r in read_csv(results_path):
-        row = {k: number(r.get(k)) for k in ("level", "cells", "cD", "cL", "dp", "wall_s")}
-        for q in QUANTITIES:
-            row[q + "_err"] = error_pct(row[q], reference[q])
-        ours.append(row)
-    ours.sort(key=lambda r: r["cells"])
+    ours = load_results(results_path, reference)
+    volume_integral = (load_results(volume_integral_path, reference)
+                       if volume_integral_path else [])
 
     paper = []
     for r in read_csv(os.path.join(DATA, "femFbmTable1.csv")):
@@ -91,10 +108,11 @@ def load(results_path):
         row = {k: number(v) for k, v in r.items() if k != "source"}
         row["source"] = r["source"]
         body_fitted.append(row)
-    return reference, interval, ours, paper, body_fitted
+    return reference, interval, ours, volume_integral, paper, body_fitted
 
 
-def write_table(path, reference, interval, ours, paper, body_fitted):
+def write_table(path, reference, interval, ours, volume_integral, paper,
+                body_fitted):
     out = []
     w = out.append
     w("# DFG 2D-1 (Re = 20): fbmFoam mesh study")
@@ -110,6 +128,9 @@ def write_table(path, reference, interval, ours, paper, body_fitted):
     w("")
     w("## fbmFoam (this code)")
     w("")
+    w("Forcing `linearProfile`, forces by `momentumExchange` (fbmFoam's")
+    w("default; `results.csv`).")
+    w("")
     w("| level | cells | cD | err cD % | cL | err cL % | dp | err dp % | wall s |")
     w("|---|---|---|---|---|---|---|---|---|")
     for r in ours:
@@ -121,6 +142,34 @@ def write_table(path, reference, interval, ours, paper, body_fitted):
             f"| {fmt(r['wall_s'], 1)} |"
         )
     w("")
+    if volume_integral:
+        vi = {r["level"]: r for r in volume_integral}
+        w("### Same runs, force by the paper's volume integral (Eq. 14)")
+        w("")
+        w("`compareForceModels (volumeIntegral)`: -int sigma.grad(alpha) dV")
+        w("on the same flow (`results-volumeIntegral.csv`), beside the")
+        w("momentum-exchange values above.")
+        w("")
+        w("| level | cells | cD volume int. | err cD % | cD mom. exch. err % "
+          "| cL volume int. | err cL % | cL mom. exch. err % |")
+        w("|---|---|---|---|---|---|---|---|")
+        nan = {"cD": math.nan, "cD_err": math.nan,
+               "cL": math.nan, "cL_err": math.nan}
+        levels = sorted(set(vi) | {r["level"] for r in ours},
+                        key=lambda x: (math.isnan(x), x))
+        main = {r["level"]: r for r in ours}
+        for level in levels:
+            v = vi.get(level, nan)
+            m = main.get(level, nan)
+            cells = vi[level]["cells"] if level in vi else main[level]["cells"]
+            w(
+                f"| {fmt(level, 0)} | {fmt(cells, 0)} "
+                f"| {fmt(v['cD'], 4)} | {fmt_err(v['cD_err'])} "
+                f"| {fmt_err(m['cD_err'])} "
+                f"| {fmt(v['cL'], 5)} | {fmt_err(v['cL_err'])} "
+                f"| {fmt_err(m['cL_err'])} |"
+            )
+        w("")
     w("## Paper, FEM-FBM (Table 1: Q2/P1, locally refined mesh)")
     w("")
     w("| level | elements | cD | err cD % | cL | err cL % |")
@@ -156,9 +205,9 @@ def positive(xs, ys):
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
-def write_plot(path, ours, paper, body_fitted):
+def write_plot(path, ours, volume_integral, paper, body_fitted):
     style = {"cD": ("C0", "o"), "cL": ("C1", "s"), "dp": ("C2", "^")}
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5))
+    fig, axes = plt.subplots(1, 2, figsize=(13, 7))
 
     for ax, xkey, xlabel in (
         (axes[0], "cells", "cells"),
@@ -167,15 +216,22 @@ def write_plot(path, ours, paper, body_fitted):
         for q in QUANTITIES:
             x, y = positive([r[xkey] for r in ours], [r[q + "_err"] for r in ours])
             colour, marker = style[q]
-            ax.loglog(x, y, marker=marker, color=colour, label=f"fbmFoam {q}")
+            ax.loglog(x, y, marker=marker, color=colour,
+                      label=f"fbmFoam {q} (momentum exchange)" if q == "cD"
+                      else f"fbmFoam {q}")
+        x, y = positive([r[xkey] for r in volume_integral],
+                        [r["cD_err"] for r in volume_integral])
+        if x:
+            ax.loglog(x, y, "o--", color="C0",
+                      label="fbmFoam cD (volume integral, Eq. 14)")
         ax.set_xlabel(xlabel)
         ax.set_ylabel("|error| [%]")
         ax.grid(True, which="both", alpha=0.3)
 
     x, y = positive([r["cells"] for r in paper], [r["cD_err"] for r in paper])
-    axes[0].loglog(x, y, "o--", color="C0", mfc="none", label="paper FEM-FBM cD")
+    axes[0].loglog(x, y, "o-.", color="C3", mfc="none", label="paper FEM-FBM cD")
     x, y = positive([r["cells"] for r in paper], [r["cL_err"] for r in paper])
-    axes[0].loglog(x, y, "s--", color="C1", mfc="none", label="paper FEM-FBM cL")
+    axes[0].loglog(x, y, "s-.", color="C4", mfc="none", label="paper FEM-FBM cL")
     for source, ls in (("simpleFoam", "o:"), ("pimpleFoam", "D:")):
         rows = [r for r in body_fitted if r["source"] == source]
         x, y = positive([r["cells"] for r in rows], [r["cD_err_pct"] for r in rows])
@@ -187,12 +243,15 @@ def write_plot(path, ours, paper, body_fitted):
     axes[0].set_title("DFG 2D-1: error against mesh size")
     axes[1].set_title("DFG 2D-1: error against cost")
     for ax in axes:
-        ax.legend(fontsize="small")
+        ax.legend(fontsize="small", loc="upper center",
+                  bbox_to_anchor=(0.5, -0.14), ncol=2)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
 
 def check(ours):
+    """Acceptance on the finest finished level of results.csv: |error| of
+    cD and dp within TOLERANCE; cL is printed only."""
     finest = [r for r in ours if not math.isnan(r["cD"])]
     if not finest:
         print("check: no finished level in results", file=sys.stderr)
@@ -201,10 +260,15 @@ def check(ours):
     ok = True
     for q in QUANTITIES:
         err = r[q + "_err"]
-        passed = abs(err) <= TOLERANCE[q]
-        ok = ok and passed
-        print(f"check: level {r['level']:.0f} {q} error {err:+.3f} % "
-              f"(tolerance {TOLERANCE[q]} %): {'ok' if passed else 'FAILED'}")
+        head = (f"check: level {r['level']:.0f} ({r['cells']:.0f} cells) "
+                f"{q} = {r[q]:.6g}, error {err:+.3f} %")
+        if q in TOLERANCE:
+            passed = abs(err) <= TOLERANCE[q]
+            ok = ok and passed
+            print(f"{head} (tolerance {TOLERANCE[q]} %): "
+                  f"{'ok' if passed else 'FAILED'}")
+        else:
+            print(f"{head} (not checked)")
     return ok
 
 
@@ -212,6 +276,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-i", "--input", default=os.path.join(HERE, "results.csv"),
                         help="results csv (default: results.csv here)")
+    parser.add_argument("-v", "--volume-integral", default=None,
+                        help="results csv of the volume-integral force "
+                        "(default: results-volumeIntegral.csv beside the "
+                        "input, if there)")
     parser.add_argument("-o", "--output", default=None,
                         help="output folder (default: that of the input)")
     parser.add_argument("--check", action="store_true",
@@ -219,12 +287,20 @@ def main():
     args = parser.parse_args()
 
     outdir = args.output or os.path.dirname(os.path.abspath(args.input))
-    reference, interval, ours, paper, body_fitted = load(args.input)
+    vi_path = args.volume_integral
+    if vi_path is None:
+        vi_path = os.path.join(os.path.dirname(os.path.abspath(args.input)),
+                               "results-volumeIntegral.csv")
+        if not os.path.isfile(vi_path):
+            vi_path = None
+    reference, interval, ours, volume_integral, paper, body_fitted = load(
+        args.input, vi_path)
 
     table = os.path.join(outdir, "table.md")
     chart = os.path.join(outdir, "convergence.png")
-    write_table(table, reference, interval, ours, paper, body_fitted)
-    write_plot(chart, ours, paper, body_fitted)
+    write_table(table, reference, interval, ours, volume_integral, paper,
+                body_fitted)
+    write_plot(chart, ours, volume_integral, paper, body_fitted)
     print(f"Wrote {table}\nWrote {chart}")
 
     if args.check and not check(ours):
