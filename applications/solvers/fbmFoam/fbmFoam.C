@@ -21,9 +21,12 @@ Description
 
     The flow step is pimpleFoam's (PIMPLE, fixed mesh; GAMG for p is set in
     fvSolution). The bodies come from the fbm library (constant/fbmProperties):
-    their velocity is imposed on the momentum matrix before it is solved and
-    before the pressure equation uses it, and their hydrodynamic forces are
-    the volume integral -int sigma . grad(alpha) dV after each time step.
+    at the start of a time step the bodies that move are advanced with the
+    forces of the previous step (explicit coupling, Newton-Euler); their
+    velocity is then imposed on the momentum matrix before it is solved and
+    before the pressure equation uses it; after the PIMPLE loop their
+    hydrodynamic forces and torques are computed (volume integral
+    -int sigma . grad(alpha) dV or momentum exchange) and written.
     See src/fbm/fictitiousBoundary/fictitiousBoundary.H.
 
     \heading Required fields
@@ -85,6 +88,9 @@ int main(int argc, char *argv[])
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // --- Move the bodies with the forces of the last step
+        fbm.moveBodies();
 
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())

@@ -35,7 +35,13 @@ Foam::fbm::body::body
     centre_(dict.get<point>("centre")),
     U_(dict.get<vector>("U")),
     omega_(dict.get<vector>("omega")),
-    fixed_(dict.get<bool>("fixed")),
+    translate_(dict.get<bool>("translate")),
+    rotate_(dict.get<bool>("rotate")),
+    Q_(tensor::I),
+    theta_(Zero),
+    a_(Zero),
+    omegaDot_(Zero),
+    planeMask_(1, 1, 1),
     coeffs_(dict.found("coefficients")),
     magUInf_(1),
     Aref_(1),
@@ -44,14 +50,6 @@ Foam::fbm::body::body
     force_(Zero),
     torque_(Zero)
 {
-    if (!fixed_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Body " << name_ << ": 'fixed false' (free motion) is not"
-            << " available in this version; set 'fixed true;'"
-            << exit(FatalIOError);
-    }
-
     if (coeffs_)
     {
         const dictionary& cDict = dict.subDict("coefficients");
@@ -78,6 +76,7 @@ Foam::fbm::body::body
         if (sd[d] < 0)
         {
             centre_[d] = mesh.bounds().centre()[d];
+            planeMask_[d] = 0;
 
             if (mag(U_[d]) > 0)
             {
@@ -127,6 +126,92 @@ Foam::scalar Foam::fbm::body::Cl
 ) const
 {
     return (F & liftDir_)/(0.5*rhoFluid*sqr(magUInf_)*Aref_);
+}
+
+
+Foam::symmTensor Foam::fbm::body::inertia() const
+{
+    // Q I0 Q^T; circles and spheres are axisymmetric, so this is I0
+    return symm(Q_ & (rho_*shape_->inertiaPerDensity()) & Q_.T());
+}
+
+
+void Foam::fbm::body::move
+(
+    const vector& g,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const scalar dt
+)
+{
+    const scalar V = shape_->volume();
+    const scalar M = rho_*V;
+    const scalar Mf = rhoFluid*V;
+
+    if (translate_)
+    {
+        const vector Fnet((M - Mf)*g + force_ + addedMassCoeff*Mf*a_);
+        const vector aNew(cmptMultiply(planeMask_, Fnet/(M + addedMassCoeff*Mf)));
+        const vector U0(U_);
+        U_ += dt*aNew;
+        centre_ += 0.5*dt*(U0 + U_);
+        a_ = aNew;
+    }
+
+    if (rotate_)
+    {
+        const symmTensor I(inertia());
+        vector wDot(inv(I) & (torque_ - (omega_ ^ (I & omega_))));
+        if (cmptMin(planeMask_) == 0)
+        {
+            // 2D: rotation about the empty direction only
+            wDot = wDot - cmptMultiply(planeMask_, wDot);
+        }
+        const vector w0(omega_);
+        omega_ += dt*wDot;
+        omegaDot_ = wDot;
+
+        // Rotate the orientation by the mean angular velocity of the step
+        const vector phi(0.5*dt*(w0 + omega_));
+        theta_ += phi;
+        const scalar angle = mag(phi);
+        if (angle > VSMALL)
+        {
+            const vector k(phi/angle);
+            const tensor K(0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0);
+            const tensor R(tensor::I + Foam::sin(angle)*K
+              + (1 - Foam::cos(angle))*(K & K));
+            Q_ = R & Q_;
+        }
+    }
+}
+
+
+void Foam::fbm::body::readState(const dictionary& dict)
+{
+    centre_ = dict.get<point>("centre");
+    U_ = dict.get<vector>("U");
+    omega_ = dict.get<vector>("omega");
+    Q_ = dict.get<tensor>("Q");
+    theta_ = dict.get<vector>("theta");
+    a_ = dict.get<vector>("acceleration");
+    omegaDot_ = dict.get<vector>("angularAcceleration");
+    force_ = dict.get<vector>("force");
+    torque_ = dict.get<vector>("torque");
+}
+
+
+void Foam::fbm::body::writeState(dictionary& dict) const
+{
+    dict.add("centre", centre_);
+    dict.add("U", U_);
+    dict.add("omega", omega_);
+    dict.add("Q", Q_);
+    dict.add("theta", theta_);
+    dict.add("acceleration", a_);
+    dict.add("angularAcceleration", omegaDot_);
+    dict.add("force", force_);
+    dict.add("torque", torque_);
 }
 
 

@@ -14,6 +14,8 @@ License
 #include "fvMatrices.H"
 #include "Time.H"
 #include "HashSet.H"
+#include "uniformDimensionedFields.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -160,7 +162,7 @@ void Foam::fbm::fictitiousBoundary::createFiles()
         {
             os  << " Cd Cl";
         }
-        os  << endl;
+        os  << " x y z Ux Uy Uz wx wy wz" << endl;
     }
 }
 
@@ -197,6 +199,18 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             "penaltyMax", 1e6, [](scalar k){ return k >= 10; }
         )
     ),
+    addedMassCoeff_
+    (
+        getCheckOrDefault<scalar>
+        (
+            "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
+        )
+    ),
+    maxSpeed_
+    (
+        getCheckOrDefault<scalar>("maxSpeed", 1e3, [](scalar u){ return u > 0; })
+    ),
+    g_(Zero),
     bodies_(),
     cellBb_(mesh.nCells()),
     alpha_
@@ -266,6 +280,65 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         bodies_.set(n++, new body(e.keyword(), e.dict(), mesh));
     }
 
+    // Restart: the state written at the start time overrides the initial
+    // state of constant/fbmProperties
+    IOobject stateIO
+    (
+        "fbmBodies",
+        mesh.time().timeName(),
+        "uniform",
+        mesh,
+        IOobject::READ_IF_PRESENT,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (stateIO.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary state(stateIO);
+        for (body& b : bodies_)
+        {
+            b.readState(state.subDict(b.name()));
+        }
+        Info<< "fbm: body state read from " << state.objectPath() << nl;
+    }
+
+    // Gravity, for bodies that translate
+    bool translating = false;
+    for (const body& b : bodies_)
+    {
+        translating = translating || b.translates();
+    }
+    if (translating)
+    {
+        const uniformDimensionedVectorField g
+        (
+            IOobject
+            (
+                "g",
+                mesh.time().constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        g_ = g.value();
+    }
+
+    // Density ratios the plain explicit coupling cannot take
+    for (const body& b : bodies_)
+    {
+        if (b.translates() && addedMassCoeff_ == 0 && b.rho() < 1.2*rhoFluid_)
+        {
+            WarningInFunction
+                << "Body " << b.name() << ": density ratio "
+                << b.rho()/rhoFluid_ << " with the explicit coupling and"
+                << " addedMassCoeff 0 in " << objectPath() << nl
+                << "    is likely to oscillate or diverge (lagged added"
+                << " mass); set addedMassCoeff 0.5 to 1" << endl;
+        }
+    }
+
     // Cell bounding boxes, once
     const pointField& pts = mesh.points();
     const labelListList& cellPts = mesh.cellPoints();
@@ -327,6 +400,71 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::fictitiousBoundary::moveBodies()
+{
+    bool moved = false;
+    const scalar dt = mesh_.time().deltaTValue();
+
+    for (body& b : bodies_)
+    {
+        if (!b.moves()) continue;
+
+        b.move(g_, rhoFluid_, addedMassCoeff_, dt);
+        moved = true;
+
+        const scalar speed = mag(b.U()) + mag(b.omega())*b.shape().radius();
+        if (!std::isfinite(speed) || speed > maxSpeed_)
+        {
+            FatalErrorInFunction
+                << "Body " << b.name() << " at time "
+                << mesh_.time().timeName() << ": speed " << speed
+                << " (U " << b.U() << ", omega " << b.omega()
+                << ") is not finite or exceeds maxSpeed " << maxSpeed_
+                << " of " << objectPath() << nl
+                << "    The run stops; the last written time is the last"
+                << " good state. Reduce the time step or set addedMassCoeff."
+                << exit(FatalError);
+        }
+    }
+
+    if (moved)
+    {
+        updateFields();
+    }
+}
+
+
+void Foam::fbm::fictitiousBoundary::writeState() const
+{
+    const Time& runTime = mesh_.time();
+    const fileName dir(runTime.timePath()/"uniform");
+    mkDir(dir);
+
+    OFstream os(dir/"fbmBodies");
+    os.precision(17);
+    IOobject io
+    (
+        "fbmBodies",
+        runTime.timeName(),
+        "uniform",
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    io.writeHeader(os, IOdictionary::typeName);
+    for (const body& b : bodies_)
+    {
+        dictionary d;
+        b.writeState(d);
+        os.beginBlock(b.name());
+        d.write(os, false);
+        os.endBlock();
+    }
+    IOobject::writeEndDivider(os);
+}
+
 
 void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
 {
@@ -431,7 +569,12 @@ void Foam::fbm::fictitiousBoundary::writeLine
     {
         os  << ' ' << b.Cd(rhoFluid_, F) << ' ' << b.Cl(rhoFluid_, F);
     }
-    os  << endl;
+    const point& X = b.centre();
+    const vector& V = b.U();
+    const vector& w = b.omega();
+    os  << ' ' << X.x() << ' ' << X.y() << ' ' << X.z()
+        << ' ' << V.x() << ' ' << V.y() << ' ' << V.z()
+        << ' ' << w.x() << ' ' << w.y() << ' ' << w.z() << endl;
 }
 
 
@@ -467,6 +610,11 @@ void Foam::fbm::fictitiousBoundary::correctForces
         {
             writeLine(files_[bi], b, b.force(), b.torque());
         }
+    }
+
+    if (mesh_.time().writeTime())
+    {
+        writeState();
     }
 
     forAll(compareModels_, mi)

@@ -72,8 +72,18 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
         torque[bi] += (C[celli] - bodies[bi].centre()) ^ f;
     }
 
-    // Bodies at constant velocity: the enclosed fluid's momentum does not
-    // change (moving bodies add rho_f V dU/dt, rho_f I_f domega/dt)
+    // Rate of change of the momentum of the fluid the rigid body encloses
+    forAll(bodies, bi)
+    {
+        const body& b = bodies[bi];
+        if (b.moves() && Pstream::master())
+        {
+            const scalar Vf = b.shape().volume();
+            force[bi] += rhoFluid*Vf*b.acceleration();
+            torque[bi] +=
+                (rhoFluid/b.rho())*(b.inertia() & b.angularAcceleration());
+        }
+    }
 }
 
 
