@@ -90,7 +90,10 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         // --- Move the bodies with the forces of the last step
-        fbm.moveBodies();
+        if (!fbm.moveBodies())
+        {
+            runTime.writeAndEnd();
+        }
 
         // --- Pressure-velocity PIMPLE corrector loop
         while (pimple.loop())

@@ -401,7 +401,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fbm::fictitiousBoundary::moveBodies()
+bool Foam::fbm::fictitiousBoundary::moveBodies()
 {
     bool moved = false;
     const scalar dt = mesh_.time().deltaTValue();
@@ -428,10 +428,36 @@ void Foam::fbm::fictitiousBoundary::moveBodies()
         }
     }
 
-    if (moved)
+    if (!moved)
     {
-        updateFields();
+        return true;
     }
+
+    updateFields();
+
+    // A body whose covered volume falls short of its own has reached the
+    // boundary of the domain
+    bool inside = true;
+    for (const body& b : bodies_)
+    {
+        if (!b.moves()) continue;
+
+        scalar vol = 0;
+        forAll(b.cells(), i)
+        {
+            vol += b.alpha()[i]*mesh_.V()[b.cells()[i]];
+        }
+        reduce(vol, sumOp<scalar>());
+        if (vol < (1 - 1e-3)*b.shape().volume())
+        {
+            Info<< "fbm: body " << b.name() << " reaches the domain boundary"
+                << " at time " << mesh_.time().timeName() << " (centre "
+                << b.centre() << "): no contact model, the run ends" << nl;
+            inside = false;
+        }
+    }
+
+    return inside;
 }
 
 
