@@ -492,6 +492,124 @@ void Foam::fbm::fictitiousBoundary::writeState() const
 }
 
 
+void Foam::fbm::fictitiousBoundary::writeCloud() const
+{
+    const Time& runTime = mesh_.time();
+    const word cloudName("fbmBodies");
+
+    // Bodies whose centre lies in this processor's cells
+    DynamicList<label> mine(bodies_.size());
+    DynamicList<label> cells(bodies_.size());
+    forAll(bodies_, bi)
+    {
+        const label celli = mesh_.findCell(bodies_[bi].centre());
+        if (celli != -1)
+        {
+            mine.append(bi);
+            cells.append(celli);
+        }
+    }
+
+    const fileName dir(runTime.timePath()/"lagrangian"/cloudName);
+    mkDir(dir);
+
+    auto header = [&](OFstream& os, const word& name, const word& cls)
+    {
+        IOobject io
+        (
+            name,
+            runTime.timeName(),
+            "lagrangian"/cloudName,
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        os.precision(12);
+        io.writeHeader(os, cls);
+        os  << mine.size() << nl << token::BEGIN_LIST << nl;
+    };
+    auto footer = [](OFstream& os)
+    {
+        os  << token::END_LIST << nl;
+        IOobject::writeEndDivider(os);
+    };
+
+    {
+        OFstream os(dir/"positions");
+        header(os, "positions", "Cloud<passiveParticle>");
+        forAll(mine, i)
+        {
+            os  << bodies_[mine[i]].centre() << ' ' << cells[i] << nl;
+        }
+        footer(os);
+    }
+    {
+        OFstream os(dir/"d");
+        header(os, "d", "scalarField");
+        for (const label bi : mine)
+        {
+            os  << bodies_[bi].shape().diameter() << nl;
+        }
+        footer(os);
+    }
+    {
+        OFstream os(dir/"rho");
+        header(os, "rho", "scalarField");
+        for (const label bi : mine)
+        {
+            os  << bodies_[bi].rho() << nl;
+        }
+        footer(os);
+    }
+    {
+        OFstream os(dir/"id");
+        header(os, "id", "labelField");
+        for (const label bi : mine)
+        {
+            os  << bi << nl;
+        }
+        footer(os);
+    }
+    {
+        OFstream os(dir/"U");
+        header(os, "U", "vectorField");
+        for (const label bi : mine)
+        {
+            os  << bodies_[bi].U() << nl;
+        }
+        footer(os);
+    }
+    {
+        OFstream os(dir/"omega");
+        header(os, "omega", "vectorField");
+        for (const label bi : mine)
+        {
+            os  << bodies_[bi].omega() << nl;
+        }
+        footer(os);
+    }
+
+    // For foamToVTK
+    const fileName propsDir(runTime.timePath()/"uniform"/"lagrangian"/cloudName);
+    mkDir(propsDir);
+    OFstream os(propsDir/"cloudProperties");
+    IOobject io
+    (
+        "cloudProperties",
+        runTime.timeName(),
+        "uniform"/("lagrangian"/cloudName),
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    io.writeHeader(os, IOdictionary::typeName);
+    os.writeEntry("geometry", word("positions"));
+    IOobject::writeEndDivider(os);
+}
+
+
 void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
 {
     scalarField& diag = UEqn.diag();
@@ -641,6 +759,7 @@ void Foam::fbm::fictitiousBoundary::correctForces
     if (mesh_.time().writeTime())
     {
         writeState();
+        writeCloud();
     }
 
     forAll(compareModels_, mi)
