@@ -303,26 +303,27 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     }
 
     // Gravity, for bodies that translate
-    bool translating = false;
     for (const body& b : bodies_)
     {
-        translating = translating || b.translates();
-    }
-    if (translating)
-    {
-        const uniformDimensionedVectorField g
+        if (!b.translates()) continue;
+
+        IOobject gIO
         (
-            IOobject
-            (
-                "g",
-                mesh.time().constant(),
-                mesh,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
+            "g",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
         );
-        g_ = g.value();
+        if (!gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            FatalIOErrorInFunction(b.dict())
+                << "Body " << b.name() << " translates, but there is no"
+                << " gravity file " << gIO.objectPath() << exit(FatalIOError);
+        }
+        g_ = uniformDimensionedVectorField(gIO).value();
+        break;
     }
 
     // Density ratios the plain explicit coupling cannot take
