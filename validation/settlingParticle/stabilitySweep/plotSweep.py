@@ -1,0 +1,55 @@
+"""Table and chart of the stability sweep (sweep.csv -> table.md, sweep.png)."""
+import csv
+import os
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+
+here = os.path.dirname(os.path.abspath(__file__))
+rows = list(csv.DictReader(open(os.path.join(here, 'sweep.csv'))))
+rhos = sorted({float(r['rho_s']) for r in rows}, reverse=True)
+Cas = sorted({float(r['Ca']) for r in rows})
+cell = {(float(r['rho_s']), float(r['Ca'])): r for r in rows}
+
+with open(os.path.join(here, 'table.md'), 'w') as f:
+    f.write('Settling particle, nu = 0.1, level 3 (R/h = 3), dt = 1e-3, to '
+            't = 0.3: status (v at t = 0.3, oscillation index)\n\n')
+    f.write('| rho_s/rho_f | ' + ' | '.join('C_a = %g' % c for c in Cas)
+            + ' |\n|---|' + '---|'*len(Cas) + '\n')
+    for rho in rhos:
+        cells = []
+        for c in Cas:
+            r = cell.get((rho, c))
+            if r is None:
+                cells.append('-')
+            elif r['status'] == 'diverged':
+                cells.append('**diverged** at t = %s' % r['t_end'])
+            else:
+                cells.append('%s (v = %.3f, osc %.2g)'
+                             % (r['status'], float(r['v_end']), float(r['osc'])))
+        f.write('| %g | %s |\n' % (rho, ' | '.join(cells)))
+    f.write('\nLowest density ratio that runs stably to t = 0.3:\n\n')
+    for c in Cas:
+        ok = [rho for rho in rhos
+              if cell.get((rho, c), {}).get('status') == 'stable']
+        f.write('- C_a = %g: %s\n' % (c, ('%g' % min(ok)) if ok else 'none'))
+
+colour = {'stable': 'tab:green', 'oscillating': 'tab:orange',
+          'diverged': 'tab:red'}
+fig, ax = plt.subplots(figsize=(6, 3.5))
+for r in rows:
+    ax.scatter(float(r['rho_s']) - 1, float(r['Ca']), s=120,
+               c=colour[r['status']], marker='o' if r['status'] != 'diverged'
+               else 'x')
+for s, c in colour.items():
+    ax.scatter([], [], c=c, label=s, marker='x' if s == 'diverged' else 'o')
+ax.set_xscale('log')
+ax.set_xlabel('rho_s/rho_f - 1')
+ax.set_ylabel('addedMassCoeff C_a')
+ax.set_title('Explicit coupling: settling disk, dt = 1e-3, R/h = 3')
+ax.legend(loc='upper right', fontsize=8)
+ax.grid(True, which='both', alpha=0.3)
+fig.tight_layout()
+fig.savefig(os.path.join(here, 'sweep.png'), dpi=120)
+print('wrote table.md, sweep.png')
