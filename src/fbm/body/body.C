@@ -160,8 +160,18 @@ void Foam::fbm::body::move
 
     if (rotate_)
     {
+        // Same virtual-mass stabilisation as the translation, with the
+        // inertia of the enclosed fluid I_f = (rho_f/rho_s) I
         const symmTensor I(inertia());
-        vector wDot(inv(I) & (torque_ - (omega_ ^ (I & omega_))));
+        const symmTensor If((rhoFluid/rho_)*I);
+        vector wDot
+        (
+            inv(I + addedMassCoeff*If)
+          & (
+                torque_ - (omega_ ^ (I & omega_))
+              + addedMassCoeff*(If & omegaDot_)
+            )
+        );
         if (cmptMin(planeMask_) == 0)
         {
             // 2D: rotation about the empty direction only
