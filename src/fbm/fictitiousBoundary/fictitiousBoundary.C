@@ -19,6 +19,10 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+const Foam::word Foam::fbm::fictitiousBoundary::cloudName_("fbmBodies");
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
 namespace Foam
 {
 namespace fbm
@@ -493,10 +497,41 @@ void Foam::fbm::fictitiousBoundary::writeState() const
 }
 
 
+void Foam::fbm::fictitiousBoundary::writeCloudHeader
+(
+    OFstream& os,
+    const word& name,
+    const word& className,
+    const label size
+) const
+{
+    IOobject io
+    (
+        name,
+        mesh_.time().timeName(),
+        "lagrangian"/cloudName_,
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    os.precision(12);
+    io.writeHeader(os, className);
+    os  << size << nl << token::BEGIN_LIST << nl;
+}
+
+
+void Foam::fbm::fictitiousBoundary::writeCloudFooter(OFstream& os)
+{
+    os  << token::END_LIST << nl;
+    IOobject::writeEndDivider(os);
+}
+
+
 void Foam::fbm::fictitiousBoundary::writeCloud() const
 {
     const Time& runTime = mesh_.time();
-    const word cloudName("fbmBodies");
+    const word& cloudName = cloudName_;
 
     // Bodies whose centre lies in this processor's cells
     DynamicList<label> mine(bodies_.size());
@@ -514,82 +549,34 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
     const fileName dir(runTime.timePath()/"lagrangian"/cloudName);
     mkDir(dir);
 
-    auto header = [&](OFstream& os, const word& name, const word& cls)
-    {
-        IOobject io
-        (
-            name,
-            runTime.timeName(),
-            "lagrangian"/cloudName,
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-        os.precision(12);
-        io.writeHeader(os, cls);
-        os  << mine.size() << nl << token::BEGIN_LIST << nl;
-    };
-    auto footer = [](OFstream& os)
-    {
-        os  << token::END_LIST << nl;
-        IOobject::writeEndDivider(os);
-    };
-
+    // positions (legacy format: centre and cell), then one field a file
     {
         OFstream os(dir/"positions");
-        header(os, "positions", "Cloud<passiveParticle>");
+        writeCloudHeader(os, "positions", "Cloud<passiveParticle>", mine.size());
         forAll(mine, i)
         {
             os  << bodies_[mine[i]].centre() << ' ' << cells[i] << nl;
         }
-        footer(os);
+        writeCloudFooter(os);
     }
+
+    scalarField d(mine.size()), rho(mine.size());
+    labelField id(mine.size());
+    vectorField U(mine.size()), omega(mine.size());
+    forAll(mine, i)
     {
-        OFstream os(dir/"d");
-        header(os, "d", "scalarField");
-        for (const label bi : mine)
-        {
-            os  << bodies_[bi].shape().diameter() << nl;
-        }
-        footer(os);
+        const body& b = bodies_[mine[i]];
+        d[i] = b.shape().diameter();
+        rho[i] = b.rho();
+        id[i] = mine[i];
+        U[i] = b.U();
+        omega[i] = b.omega();
     }
-    {
-        OFstream os(dir/"rho");
-        header(os, "rho", "scalarField");
-        for (const label bi : mine)
-        {
-            os  << bodies_[bi].rho() << nl;
-        }
-        footer(os);
-    }
-    {
-        OFstream os(dir/"id");
-        header(os, "id", "labelField");
-        for (const label bi : mine)
-        {
-            os  << bi << nl;
-        }
-        footer(os);
-    }
-    {
-        OFstream os(dir/"U");
-        header(os, "U", "vectorField");
-        for (const label bi : mine)
-        {
-            os  << bodies_[bi].U() << nl;
-        }
-        footer(os);
-    }
-    {
-        OFstream os(dir/"omega");
-        header(os, "omega", "vectorField");
-        for (const label bi : mine)
-        {
-            os  << bodies_[bi].omega() << nl;
-        }
-        footer(os);
-    }
+    writeCloudField(dir, "d", d);
+    writeCloudField(dir, "rho", rho);
+    writeCloudField(dir, "id", id);
+    writeCloudField(dir, "U", U);
+    writeCloudField(dir, "omega", omega);
 
     // For foamToVTK
     const fileName propsDir(runTime.timePath()/"uniform"/"lagrangian"/cloudName);
