@@ -47,6 +47,7 @@ Foam::fbm::body::body
     Aref_(1),
     dragDir_(1, 0, 0),
     liftDir_(0, 1, 0),
+    bandValid_(false),
     force_(Zero),
     torque_(Zero)
 {
@@ -225,6 +226,62 @@ void Foam::fbm::body::writeState(dictionary& dict) const
 }
 
 
+Foam::scalar Foam::fbm::body::coveredVolume(const fvMesh& mesh) const
+{
+    scalar vol = 0;
+    forAll(cells_, i)
+    {
+        vol += alpha_[i]*mesh.V()[cells_[i]];
+    }
+    return returnReduce(vol, sumOp<scalar>());
+}
+
+
+const Foam::labelList& Foam::fbm::body::bandCells(const fvMesh& mesh) const
+{
+    if (bandValid_)
+    {
+        return bandCells_;
+    }
+
+    // Band where grad(alpha) is non-zero: every cell whose alpha differs
+    // from a face neighbour's, and those neighbours
+    Map<scalar> alphaOf(2*cells_.size());
+    forAll(cells_, i)
+    {
+        alphaOf.insert(cells_[i], alpha_[i]);
+    }
+
+    const labelListList& cellCells = mesh.cellCells();
+    labelHashSet band(2*cells_.size());
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        bool edge = (alpha_[i] < 1);
+        if (!edge)
+        {
+            for (const label nbr : cellCells[celli])
+            {
+                if (alphaOf.lookup(nbr, 0) != alpha_[i])
+                {
+                    edge = true;
+                    break;
+                }
+            }
+        }
+        if (edge)
+        {
+            band.insert(celli);
+            band.insert(cellCells[celli]);
+        }
+    }
+    bandCells_ = band.sortedToc();
+    bandValid_ = true;
+
+    return bandCells_;
+}
+
+
 void Foam::fbm::body::updateCells
 (
     const fvMesh& mesh,
@@ -265,38 +322,7 @@ void Foam::fbm::body::updateCells
     cells_.transfer(cells);
     alpha_.transfer(alpha);
 
-    // Band where grad(alpha) is non-zero: every cell whose alpha differs
-    // from a face neighbour's, and those neighbours
-    Map<scalar> alphaOf(2*cells_.size());
-    forAll(cells_, i)
-    {
-        alphaOf.insert(cells_[i], alpha_[i]);
-    }
-
-    const labelListList& cellCells = mesh.cellCells();
-    labelHashSet band(2*cells_.size());
-    forAll(cells_, i)
-    {
-        const label celli = cells_[i];
-        bool edge = (alpha_[i] < 1);
-        if (!edge)
-        {
-            for (const label nbr : cellCells[celli])
-            {
-                if (alphaOf.lookup(nbr, 0) != alpha_[i])
-                {
-                    edge = true;
-                    break;
-                }
-            }
-        }
-        if (edge)
-        {
-            band.insert(celli);
-            band.insert(cellCells[celli]);
-        }
-    }
-    bandCells_ = band.sortedToc();
+    bandValid_ = false;
 }
 
 

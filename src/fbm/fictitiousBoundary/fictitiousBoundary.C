@@ -376,12 +376,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     // its own (a body cut by the boundary is an input error)
     for (const body& b : bodies_)
     {
-        scalar vol = 0;
-        forAll(b.cells(), i)
-        {
-            vol += b.alpha()[i]*mesh.V()[b.cells()[i]];
-        }
-        reduce(vol, sumOp<scalar>());
+        const scalar vol = b.coveredVolume(mesh);
         const scalar V = b.shape().volume();
         Info<< "    " << b.name() << ": " << b.shape().type()
             << " centre " << b.centre() << " volume " << V
@@ -447,13 +442,7 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
     {
         if (!b.moves()) continue;
 
-        scalar vol = 0;
-        forAll(b.cells(), i)
-        {
-            vol += b.alpha()[i]*mesh_.V()[b.cells()[i]];
-        }
-        reduce(vol, sumOp<scalar>());
-        if (vol < (1 - 1e-3)*b.shape().volume())
+        if (b.coveredVolume(mesh_) < (1 - 1e-3)*b.shape().volume())
         {
             Info<< "fbm: body " << b.name() << " reaches the domain boundary"
                 << " at time " << mesh_.time().timeName() << " (centre "

@@ -81,7 +81,7 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
         vector F(Zero);
         vector T(Zero);
 
-        for (const label celli : b.bandCells())
+        for (const label celli : b.bandCells(mesh))
         {
             // Gauss gradient of this body's alpha times the cell volume
             vector gradAlphaV(Zero);
