@@ -49,7 +49,11 @@ Foam::fbm::body::body
     liftDir_(0, 1, 0),
     bandValid_(false),
     force_(Zero),
-    torque_(Zero)
+    torque_(Zero),
+    U0_(Zero),
+    omega0_(Zero),
+    aHeld_(Zero),
+    omegaDotHeld_(Zero)
 {
     if (coeffs_)
     {
@@ -137,6 +141,70 @@ Foam::symmTensor Foam::fbm::body::inertia() const
 }
 
 
+Foam::vector Foam::fbm::body::linearAcceleration
+(
+    const vector& g,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const vector& contactForce,
+    const vector& aLag
+) const
+{
+    const scalar V = shape_->volume();
+    const scalar M = rho_*V;
+    const scalar Mf = rhoFluid*V;
+
+    const vector Fnet
+    (
+        (M - Mf)*g + force_ + contactForce + addedMassCoeff*Mf*aLag
+    );
+    return cmptMultiply(planeMask_, Fnet/(M + addedMassCoeff*Mf));
+}
+
+
+Foam::vector Foam::fbm::body::angularAcceleration
+(
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const vector& omegaDotLag
+) const
+{
+    // Same virtual-mass stabilisation as the translation, with the
+    // inertia of the enclosed fluid I_f = (rho_f/rho_s) I
+    const symmTensor I(inertia());
+    const symmTensor If((rhoFluid/rho_)*I);
+    vector wDot
+    (
+        inv(I + addedMassCoeff*If)
+      & (
+            torque_ - (omega_ ^ (I & omega_))
+          + addedMassCoeff*(If & omegaDotLag)
+        )
+    );
+    if (cmptMin(planeMask_) == 0)
+    {
+        // 2D: rotation about the empty direction only
+        wDot = wDot - cmptMultiply(planeMask_, wDot);
+    }
+    return wDot;
+}
+
+
+void Foam::fbm::body::rotateBy(const vector& phi)
+{
+    theta_ += phi;
+    const scalar angle = mag(phi);
+    if (angle > VSMALL)
+    {
+        const vector k(phi/angle);
+        const tensor K(0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0);
+        const tensor R(tensor::I + Foam::sin(angle)*K
+          + (1 - Foam::cos(angle))*(K & K));
+        Q_ = R & Q_;
+    }
+}
+
+
 void Foam::fbm::body::move
 (
     const vector& g,
@@ -145,14 +213,14 @@ void Foam::fbm::body::move
     const scalar dt
 )
 {
-    const scalar V = shape_->volume();
-    const scalar M = rho_*V;
-    const scalar Mf = rhoFluid*V;
-
     if (translate_)
     {
-        const vector Fnet((M - Mf)*g + force_ + addedMassCoeff*Mf*a_);
-        const vector aNew(cmptMultiply(planeMask_, Fnet/(M + addedMassCoeff*Mf)));
+        // No contact force: adding a zero vector leaves the sum
+        // bit-identical
+        const vector aNew
+        (
+            linearAcceleration(g, rhoFluid, addedMassCoeff, Zero, a_)
+        );
         const vector U0(U_);
         U_ += dt*aNew;
         centre_ += 0.5*dt*(U0 + U_);
@@ -161,39 +229,77 @@ void Foam::fbm::body::move
 
     if (rotate_)
     {
-        // Same virtual-mass stabilisation as the translation, with the
-        // inertia of the enclosed fluid I_f = (rho_f/rho_s) I
-        const symmTensor I(inertia());
-        const symmTensor If((rhoFluid/rho_)*I);
-        vector wDot
+        const vector wDot
         (
-            inv(I + addedMassCoeff*If)
-          & (
-                torque_ - (omega_ ^ (I & omega_))
-              + addedMassCoeff*(If & omegaDot_)
-            )
+            angularAcceleration(rhoFluid, addedMassCoeff, omegaDot_)
         );
-        if (cmptMin(planeMask_) == 0)
-        {
-            // 2D: rotation about the empty direction only
-            wDot = wDot - cmptMultiply(planeMask_, wDot);
-        }
         const vector w0(omega_);
         omega_ += dt*wDot;
         omegaDot_ = wDot;
 
         // Rotate the orientation by the mean angular velocity of the step
-        const vector phi(0.5*dt*(w0 + omega_));
-        theta_ += phi;
-        const scalar angle = mag(phi);
-        if (angle > VSMALL)
-        {
-            const vector k(phi/angle);
-            const tensor K(0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0);
-            const tensor R(tensor::I + Foam::sin(angle)*K
-              + (1 - Foam::cos(angle))*(K & K));
-            Q_ = R & Q_;
-        }
+        rotateBy(0.5*dt*(w0 + omega_));
+    }
+}
+
+
+void Foam::fbm::body::beginSubCycles()
+{
+    U0_ = U_;
+    omega0_ = omega_;
+    aHeld_ = a_;
+    omegaDotHeld_ = omegaDot_;
+}
+
+
+void Foam::fbm::body::kick
+(
+    const vector& g,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const scalar dt,
+    const vector& contactForce
+)
+{
+    if (translate_)
+    {
+        U_ += dt*linearAcceleration
+        (
+            g, rhoFluid, addedMassCoeff, contactForce, aHeld_
+        );
+    }
+    if (rotate_)
+    {
+        omega_ += dt*angularAcceleration
+        (
+            rhoFluid, addedMassCoeff, omegaDotHeld_
+        );
+    }
+}
+
+
+void Foam::fbm::body::drift(const scalar dt)
+{
+    if (translate_)
+    {
+        centre_ += dt*U_;
+    }
+    if (rotate_)
+    {
+        rotateBy(dt*omega_);
+    }
+}
+
+
+void Foam::fbm::body::endSubCycles(const scalar dt)
+{
+    if (translate_)
+    {
+        a_ = (U_ - U0_)/dt;
+    }
+    if (rotate_)
+    {
+        omegaDot_ = (omega_ - omega0_)/dt;
     }
 }
 

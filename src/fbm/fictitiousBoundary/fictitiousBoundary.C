@@ -261,7 +261,8 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     lambda_(mesh.nCells(), Zero),
     scratch_(mesh.nCells(), Zero),
     forceModel_(forceModel::New(*this)),
-    compareModels_()
+    compareModels_(),
+    collisions_()
 {
     const dictionary& bodiesDict = subDict("bodies");
 
@@ -370,6 +371,14 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         compareModels_.set(i, forceModel::New(d));
     }
 
+    if (isDict("collisions"))
+    {
+        collisions_.reset
+        (
+            new particleCollisions(subDict("collisions"), mesh, bodies_)
+        );
+    }
+
     updateFields();
 
     // Each body must lie in the fluid domain: its covered volume must be
@@ -401,30 +410,48 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::fbm::fictitiousBoundary::checkSpeed(const body& b) const
+{
+    const scalar speed = mag(b.U()) + mag(b.omega())*b.shape().radius();
+    if (!std::isfinite(speed) || speed > maxSpeed_)
+    {
+        FatalErrorInFunction
+            << "Body " << b.name() << " at time "
+            << mesh_.time().timeName() << ": speed " << speed
+            << " (U " << b.U() << ", omega " << b.omega()
+            << ") is not finite or exceeds maxSpeed " << maxSpeed_
+            << " of " << objectPath() << nl
+            << "    The run stops; the last written time is the last"
+            << " good state. Reduce the time step or set addedMassCoeff."
+            << exit(FatalError);
+    }
+}
+
+
 bool Foam::fbm::fictitiousBoundary::moveBodies()
 {
     bool moved = false;
     const scalar dt = mesh_.time().deltaTValue();
 
-    for (body& b : bodies_)
+    if (collisions_.valid())
     {
-        if (!b.moves()) continue;
-
-        b.move(g_, rhoFluid_, addedMassCoeff_, dt);
-        moved = true;
-
-        const scalar speed = mag(b.U()) + mag(b.omega())*b.shape().radius();
-        if (!std::isfinite(speed) || speed > maxSpeed_)
+        collisions_->move(bodies_, g_, rhoFluid_, addedMassCoeff_, dt);
+        for (const body& b : bodies_)
         {
-            FatalErrorInFunction
-                << "Body " << b.name() << " at time "
-                << mesh_.time().timeName() << ": speed " << speed
-                << " (U " << b.U() << ", omega " << b.omega()
-                << ") is not finite or exceeds maxSpeed " << maxSpeed_
-                << " of " << objectPath() << nl
-                << "    The run stops; the last written time is the last"
-                << " good state. Reduce the time step or set addedMassCoeff."
-                << exit(FatalError);
+            if (!b.moves()) continue;
+            moved = true;
+            checkSpeed(b);
+        }
+    }
+    else
+    {
+        for (body& b : bodies_)
+        {
+            if (!b.moves()) continue;
+
+            b.move(g_, rhoFluid_, addedMassCoeff_, dt);
+            moved = true;
+            checkSpeed(b);
         }
     }
 
@@ -434,6 +461,12 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
     }
 
     updateFields();
+
+    // With collisions the walls are handled by the contact
+    if (collisions_.valid())
+    {
+        return true;
+    }
 
     // A body whose covered volume falls short of its own has reached the
     // boundary of the domain

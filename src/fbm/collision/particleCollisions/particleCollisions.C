@@ -1,0 +1,253 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "particleCollisions.H"
+#include "body.H"
+#include "fvMesh.H"
+#include "volMesh.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::particleCollisions::forceScale(const fvMesh& mesh)
+{
+    if (mesh.nSolutionD() == 3)
+    {
+        return 1;
+    }
+
+    const Vector<label>& sd = mesh.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0)
+        {
+            return mesh.bounds().span()[d];
+        }
+    }
+    return 1;
+}
+
+
+Foam::scalar Foam::fbm::particleCollisions::meshSize(const fvMesh& mesh)
+{
+    const scalar Vmax = gMax(mesh.V().field());
+
+    if (mesh.nSolutionD() == 3)
+    {
+        return Foam::cbrt(Vmax);
+    }
+    return Foam::sqrt(Vmax/forceScale(mesh));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::particleCollisions::particleCollisions
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const PtrList<body>& bodies
+)
+:
+    dict_(dict),
+    h_(meshSize(mesh)),
+    depth_(forceScale(mesh)),
+    model_(contactModel::New(dict, h_)),
+    walls_(mesh),
+    search_(),
+    nStepsPerContact_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "nStepsPerContact", 20, [](scalar n){ return n >= 2; }
+        )
+    ),
+    maxSubCycles_
+    (
+        dict.getCheckOrDefault<label>
+        (
+            "maxSubCycles", 1000, [](label n){ return n >= 1; }
+        )
+    ),
+    dtSubMax_(GREAT),
+    X_(bodies.size()),
+    R_(bodies.size())
+{
+    // Stiffest contact at the largest radius against the smallest mass
+    scalar Rmax = 0;
+    scalar mMin = GREAT;
+    for (const body& b : bodies)
+    {
+        Rmax = max(Rmax, b.shape().radius());
+        if (b.translates())
+        {
+            mMin = min(mMin, b.mass());
+        }
+    }
+
+    if (mMin < GREAT)
+    {
+        const scalar kP = depth_*model_->pairStiffness(Rmax, Rmax);
+        const scalar kW = depth_*model_->wallStiffness(Rmax);
+        const scalar omega2 = max(kP/(0.5*mMin), kW/mMin);
+        if (omega2 > 0)
+        {
+            const scalar tc = constant::mathematical::pi/Foam::sqrt(omega2);
+            dtSubMax_ = tc/nStepsPerContact_;
+        }
+
+        Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kP
+            << " wall " << kW << ", smallest mass " << mMin
+            << ": contact time " << nStepsPerContact_*dtSubMax_
+            << ", largest sub-step " << dtSubMax_
+            << " (nStepsPerContact " << nStepsPerContact_
+            << ", maxSubCycles " << maxSubCycles_ << ")" << nl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::fbm::particleCollisions::nSubCycles(const scalar dt) const
+{
+    const scalar n = std::ceil(dt/dtSubMax_ - 1e-12);
+    return max(label(1), label(min(n, scalar(labelMax))));
+}
+
+
+void Foam::fbm::particleCollisions::contactForces
+(
+    const PtrList<body>& bodies,
+    List<vector>& F
+)
+{
+    const contactModel& law = *model_;
+    const scalar range = law.range();
+
+    F.setSize(bodies.size());
+    F = Zero;
+
+    // Pairs
+    if (bodies.size() > 1)
+    {
+        forAll(bodies, i)
+        {
+            X_[i] = bodies[i].centre();
+            R_[i] = bodies[i].shape().radius();
+        }
+        search_.search(X_, R_, range);
+
+        for (const labelPair& ij : search_.pairs())
+        {
+            const label i = ij.first();
+            const label j = ij.second();
+            const vector Fij(law.pairForce(X_[i], R_[i], X_[j], R_[j]));
+            F[i] += Fij;
+            F[j] -= Fij;
+        }
+    }
+
+    // Walls within reach
+    forAll(bodies, i)
+    {
+        const body& b = bodies[i];
+        if (!b.translates()) continue;
+
+        const point& X = b.centre();
+        const scalar R = b.shape().radius();
+        forAll(walls_.names(), w)
+        {
+            const scalar d = walls_.distance(w, X);
+            if (d <= 0)
+            {
+                FatalErrorInFunction
+                    << "Body " << b.name() << " (centre " << X << ") has"
+                    << " crossed the wall " << walls_.names()[w]
+                    << ": the contact law is too soft for this impact"
+                    << " (lower epsWOverlap) or the run has diverged"
+                    << exit(FatalError);
+            }
+            if (d <= R + 0.5*range)
+            {
+                F[i] += law.wallForce(X, R, walls_.image(w, X));
+            }
+        }
+    }
+
+    forAll(bodies, i)
+    {
+        F[i] = bodies[i].translates() ? depth_*F[i] : vector::zero;
+    }
+}
+
+
+void Foam::fbm::particleCollisions::move
+(
+    PtrList<body>& bodies,
+    const vector& g,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const scalar dt
+)
+{
+    const label n = nSubCycles(dt);
+    if (n > maxSubCycles_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The fluid time step " << dt << " needs " << n
+            << " collision sub-steps of at most " << dtSubMax_
+            << ", more than maxSubCycles " << maxSubCycles_ << nl
+            << "    Lower maxDeltaT, soften the contact law or raise"
+            << " maxSubCycles" << exit(FatalIOError);
+    }
+    const scalar dtSub = dt/n;
+
+    Info<< "fbm: collisions: " << n << " sub-steps of " << dtSub << nl;
+
+    for (body& b : bodies)
+    {
+        if (b.moves()) b.beginSubCycles();
+    }
+
+    // Velocity Verlet: half kick with the contact forces at the start,
+    // drift, half kick with those at the end (which start the next
+    // sub-step); the held forces give the same update as body::move
+    List<vector> F(bodies.size(), Zero);
+    contactForces(bodies, F);
+    for (label step = 0; step < n; ++step)
+    {
+        forAll(bodies, i)
+        {
+            body& b = bodies[i];
+            if (!b.moves()) continue;
+            b.kick(g, rhoFluid, addedMassCoeff, 0.5*dtSub, F[i]);
+            b.drift(dtSub);
+        }
+
+        contactForces(bodies, F);
+
+        forAll(bodies, i)
+        {
+            body& b = bodies[i];
+            if (!b.moves()) continue;
+            b.kick(g, rhoFluid, addedMassCoeff, 0.5*dtSub, F[i]);
+        }
+    }
+
+    for (body& b : bodies)
+    {
+        if (b.moves()) b.endSubCycles(dt);
+    }
+}
+
+
+// ************************************************************************* //
