@@ -84,6 +84,7 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
         #include "setDeltaT.H"
+        #include "setBodyDeltaT.H"
 
         ++runTime;
 

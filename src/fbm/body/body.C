@@ -226,6 +226,11 @@ void Foam::fbm::body::move
         centre_ += 0.5*dt*(U0 + U_);
         a_ = aNew;
     }
+    else
+    {
+        // Prescribed (held) velocity: the body moves with it
+        centre_ += dt*U_;
+    }
 
     if (rotate_)
     {
@@ -239,6 +244,10 @@ void Foam::fbm::body::move
 
         // Rotate the orientation by the mean angular velocity of the step
         rotateBy(0.5*dt*(w0 + omega_));
+    }
+    else
+    {
+        rotateBy(dt*omega_);
     }
 }
 
@@ -280,14 +289,9 @@ void Foam::fbm::body::kick
 
 void Foam::fbm::body::drift(const scalar dt)
 {
-    if (translate_)
-    {
-        centre_ += dt*U_;
-    }
-    if (rotate_)
-    {
-        rotateBy(dt*omega_);
-    }
+    // Integrated or prescribed (held) velocities alike
+    centre_ += dt*U_;
+    rotateBy(dt*omega_);
 }
 
 

@@ -214,6 +214,13 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     (
         getCheckOrDefault<scalar>("maxSpeed", 1e3, [](scalar u){ return u > 0; })
     ),
+    maxBodyCo_
+    (
+        getCheckOrDefault<scalar>
+        (
+            "maxBodyCo", VGREAT, [](scalar c){ return c > 0; }
+        )
+    ),
     g_(Zero),
     bodies_(),
     cellBb_(mesh.nCells()),
@@ -409,6 +416,46 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::fictitiousBoundary::maxDeltaT() const
+{
+    if (maxBodyCo_ >= VGREAT)
+    {
+        return VGREAT;
+    }
+
+    const Vector<label>& solD = mesh_.solutionD();
+
+    scalar dtMax = VGREAT;
+    for (const body& b : bodies_)
+    {
+        const scalar speed =
+            mag(b.U()) + mag(b.omega())*b.shape().radius();
+
+        // Smallest cell size (in the solved directions) under the body
+        scalar h = VGREAT;
+        for (const label celli : b.cells())
+        {
+            const vector span(cellBb_[celli].span());
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                if (solD[d] > 0)
+                {
+                    h = min(h, span[d]);
+                }
+            }
+        }
+        reduce(h, minOp<scalar>());
+
+        if (speed > VSMALL && h < VGREAT)
+        {
+            dtMax = min(dtMax, maxBodyCo_*h/speed);
+        }
+    }
+
+    return dtMax;
+}
+
 
 void Foam::fbm::fictitiousBoundary::checkSpeed(const body& b) const
 {
