@@ -391,6 +391,7 @@ const Foam::labelList& Foam::fbm::body::bandCells(const fvMesh& mesh) const
 void Foam::fbm::body::updateCells
 (
     const fvMesh& mesh,
+    const indexedOctree<treeDataCell>& tree,
     const List<boundBox>& cellBb,
     const label nSubdivision
 )
@@ -404,7 +405,7 @@ void Foam::fbm::body::updateCells
 
     const labelList candidates
     (
-        mesh.cellTree().findBox(treeBoundBox(bb.min(), bb.max()))
+        tree.findBox(treeBoundBox(bb.min(), bb.max()))
     );
 
     DynamicList<label> cells(candidates.size());

@@ -80,7 +80,9 @@ Foam::fbm::particleCollisions::particleCollisions
     ),
     dtSubMax_(GREAT),
     X_(bodies.size()),
-    R_(bodies.size())
+    R_(bodies.size()),
+    minPairGap_(GREAT),
+    minWallGap_(GREAT)
 {
     // Stiffest contact at the largest radius against the smallest mass
     scalar Rmax = 0;
@@ -153,6 +155,10 @@ void Foam::fbm::particleCollisions::contactForces
             const vector Fij(law.pairForce(X_[i], R_[i], X_[j], R_[j]));
             F[i] += Fij;
             F[j] -= Fij;
+            minPairGap_ = min
+            (
+                minPairGap_, mag(X_[i] - X_[j]) - R_[i] - R_[j]
+            );
         }
     }
 
@@ -178,6 +184,7 @@ void Foam::fbm::particleCollisions::contactForces
             }
             if (d <= R + 0.5*range)
             {
+                minWallGap_ = min(minWallGap_, d - R);
                 F[i] += law.wallForce(X, R, walls_.image(w, X));
             }
         }
@@ -210,6 +217,8 @@ void Foam::fbm::particleCollisions::move
             << " maxSubCycles" << exit(FatalIOError);
     }
     const scalar dtSub = dt/n;
+    minPairGap_ = GREAT;
+    minWallGap_ = GREAT;
 
     Info<< "fbm: collisions: " << n << " sub-steps of " << dtSub << nl;
 
