@@ -152,7 +152,7 @@ void Foam::fbm::fictitiousBoundary::createFiles()
         << "# All " << bodies_.size() << " bodies: largest speed"
         << " |U| + |omega| R [m/s], translational kinetic energy sum"
         << " M |U|^2/2 [J], mean centre [m], smallest pair gap D - Ri - Rj"
-        << " and wall gap d - R over the collision sub-steps [m] (1e300:"
+        << " and wall gap d - R over the collision sub-steps [m] (1e15:"
         << " none within reach)" << nl
         << "# Time N maxSpeed kineticEnergy Xx Xy Xz minPairGap minWallGap"
         << endl;
