@@ -78,9 +78,17 @@ Foam::fbm::particleCollisions::particleCollisions
             "maxSubCycles", 1000, [](label n){ return n >= 1; }
         )
     ),
+    dampingRatio_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
+        )
+    ),
     dtSubMax_(GREAT),
     X_(bodies.size()),
     R_(bodies.size()),
+    mass_(bodies.size(), GREAT),
     minPairGap_(GREAT),
     minWallGap_(GREAT)
 {
@@ -171,6 +179,16 @@ Foam::fbm::particleCollisions::particleCollisions
             dtSubMax_ = tc/nStepsPerContact_;
         }
 
+        forAll(bodies, i)
+        {
+            if (bodies[i].translates()) mass_[i] = bodies[i].mass();
+        }
+        if (dampingRatio_ > 0)
+        {
+            Info<< "fbm: collisions: normal damping ratio " << dampingRatio_
+                << nl;
+        }
+
         Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kPmax
             << " wall " << kWmax << ", smallest mass " << mMin
             << " (" << (tooMany ? label(0) : classR.size())
@@ -225,6 +243,25 @@ void Foam::fbm::particleCollisions::contactForces
             (
                 minPairGap_, mag(X_[i] - X_[j]) - R_[i] - R_[j]
             );
+
+            if (dampingRatio_ > 0)
+            {
+                const scalar mi = mass_[i];
+                const scalar mj = mass_[j];
+                if (mi == GREAT && mj == GREAT) continue;
+                const scalar mr =
+                    (mi == GREAT) ? mj : (mj == GREAT) ? mi : mi*mj/(mi + mj);
+                const vector n((X_[i] - X_[j])/max(mag(X_[i] - X_[j]), VSMALL));
+                const scalar k = depth_*law.pairStiffness(R_[i], R_[j]);
+                // Force per unit depth, as the law's (times depth below)
+                const vector Fd
+                (
+                    -(2*dampingRatio_*Foam::sqrt(k*mr)/depth_)
+                   *((bodies[i].U() - bodies[j].U()) & n)*n
+                );
+                F[i] += Fd;
+                F[j] -= Fd;
+            }
         }
     }
 
@@ -251,6 +288,15 @@ void Foam::fbm::particleCollisions::contactForces
             if (d <= R + 0.5*range)
             {
                 minWallGap_ = min(minWallGap_, d - R);
+                if (dampingRatio_ > 0)
+                {
+                    const point Xw(walls_.image(w, X));
+                    const vector n((X - Xw)/max(mag(X - Xw), VSMALL));
+                    const scalar k = depth_*law.wallStiffness(R);
+                    F[i] -=
+                        (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
+                       *(b.U() & n)*n;
+                }
                 F[i] += law.wallForce(X, R, walls_.image(w, X));
             }
         }
