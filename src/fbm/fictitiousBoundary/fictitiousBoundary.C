@@ -278,6 +278,52 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     compareModels_(),
     collisions_()
 {
+    // Cell bounding boxes, once
+    const pointField& pts = mesh.points();
+    const labelListList& cellPts = mesh.cellPoints();
+    forAll(cellBb_, celli)
+    {
+        cellBb_[celli] = boundBox(pts, cellPts[celli], false);
+    }
+
+    // Cell octree as polyMesh::cellTree(), but caching the cell boxes. On
+    // a one-cell-thick 2D mesh every octant split in the empty direction
+    // would cut every cell, the duplicity limit would stop the refinement
+    // early and leave leaves of thousands of cells: the tree's box is
+    // stretched in that direction (2^maxLevel times the mesh depth, the
+    // mesh at its low end) so that the mesh stays in one octant at every
+    // level.
+    {
+        const label maxLevel = 10;
+        treeBoundBox overallBb(pts);
+        Random rndGen(261782);
+        overallBb = overallBb.extend(rndGen, 1e-4);
+        overallBb.min() -= point::uniform(ROOTVSMALL);
+        overallBb.max() += point::uniform(ROOTVSMALL);
+
+        const Vector<label>& sd = mesh.solutionD();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (sd[d] < 0)
+            {
+                overallBb.max()[d] = overallBb.min()[d]
+                  + pow(2.0, scalar(maxLevel + 1))*overallBb.span()[d];
+            }
+        }
+
+        cellTree_.reset
+        (
+            new indexedOctree<treeDataCell>
+            (
+                treeDataCell(true, mesh, polyMesh::CELL_TETS),
+                overallBb,
+                maxLevel,
+                10,             // leafsize
+                5.0             // duplicity
+            )
+        );
+    }
+
     readBodies();
     selectBodies();
 
@@ -358,35 +404,6 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             }
             Info<< endl;
         }
-    }
-
-    // Cell bounding boxes, once
-    const pointField& pts = mesh.points();
-    const labelListList& cellPts = mesh.cellPoints();
-    forAll(cellBb_, celli)
-    {
-        cellBb_[celli] = boundBox(pts, cellPts[celli], false);
-    }
-
-    // Cell octree as polyMesh::cellTree(), but caching the cell boxes
-    {
-        treeBoundBox overallBb(pts);
-        Random rndGen(261782);
-        overallBb = overallBb.extend(rndGen, 1e-4);
-        overallBb.min() -= point::uniform(ROOTVSMALL);
-        overallBb.max() += point::uniform(ROOTVSMALL);
-
-        cellTree_.reset
-        (
-            new indexedOctree<treeDataCell>
-            (
-                treeDataCell(true, mesh, polyMesh::CELL_TETS),
-                overallBb,
-                8,              // maxLevel
-                10,             // leafsize
-                5.0             // duplicity
-            )
-        );
     }
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
@@ -575,7 +592,8 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
     DynamicList<label> cells(bodies_.size());
     forAll(bodies_, bi)
     {
-        const label celli = mesh_.findCell(bodies_[bi].centre());
+        const label celli =
+            body::findCell(mesh_, *cellTree_, bodies_[bi].centre());
         if (celli != -1)
         {
             mine.append(bi);

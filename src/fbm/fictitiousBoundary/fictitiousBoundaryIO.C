@@ -167,7 +167,10 @@ void Foam::fbm::fictitiousBoundary::readBodies()
         for (const entry& e : *bodiesDict)
         {
             names.insert(e.keyword());
-            bodies_.set(n++, new body(e.keyword(), e.dict(), mesh_));
+            bodies_.set
+            (
+                n++, new body(e.keyword(), e.dict(), mesh_, cellTree_.get())
+            );
         }
     }
 
@@ -180,7 +183,10 @@ void Foam::fbm::fictitiousBoundary::readBodies()
                 << "Body name " << listNames[i] << " of particleLists is"
                 << " already used in " << objectPath() << exit(FatalIOError);
         }
-        bodies_.set(n++, new body(listNames[i], *dicts[i], mesh_));
+        bodies_.set
+        (
+            n++, new body(listNames[i], *dicts[i], mesh_, cellTree_.get())
+        );
     }
 }
 
