@@ -170,7 +170,8 @@ void addRandom
 )
 {
     const scalar r = dict.getCheck<scalar>("radius", scalarMinMax(0, GREAT));
-    const label number = dict.getCheck<label>("number", labelMinMax(0, labelMax));
+    const label number =
+        dict.getCheck<label>("number", labelMinMax(0, labelMax));
     const FixedList<point, 2> box(dict.get<FixedList<point, 2>>("box"));
     const scalar gap = dict.getCheck<scalar>("minGap", scalarMinMax(0, GREAT));
     const label seed = dict.get<label>("seed");
@@ -247,7 +248,8 @@ void addRandom
             {
                 for (label dz = -1; dz <= 1 && free; ++dz)
                 {
-                    const auto iter = cells.cfind(key(ix + dx, iy + dy, iz + dz));
+                    const auto iter =
+                        cells.cfind(key(ix + dx, iy + dy, iz + dz));
                     if (!iter.found()) continue;
                     for (const label pj : *iter)
                     {
@@ -284,7 +286,8 @@ void settle
 {
     const scalar rho = dict.getCheck<scalar>("rho", scalarMinMax(0, GREAT));
     const scalar dt = dict.getCheck<scalar>("deltaT", scalarMinMax(0, GREAT));
-    const scalar endTime = dict.getCheck<scalar>("endTime", scalarMinMax(0, GREAT));
+    const scalar endTime =
+        dict.getCheck<scalar>("endTime", scalarMinMax(0, GREAT));
     const scalar c = dict.getCheck<scalar>("damping", scalarMinMax(0, GREAT));
     const scalar stopSpeed =
         dict.getCheck<scalar>("stopSpeed", scalarMinMax(0, GREAT));
