@@ -297,6 +297,28 @@ int main(int argc, char *argv[])
         }
         checkSearch("search sparse, 500", X, R, 0.005);
 
+        // Polydisperse: 500 small and 6 large (> 4 Rmin: box queries),
+        // two of them overlapping each other, in 3D and in a plane
+        pointField Xp(n + 6);
+        scalarField Rp(n + 6);
+        forAll(Xp, i)
+        {
+            Xp[i] = point(rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>());
+            Rp[i] = 0.01 + 0.01*rnd.sample01<scalar>();
+        }
+        for (label i = n; i < n + 6; ++i)
+        {
+            Rp[i] = 0.1 + 0.1*rnd.sample01<scalar>();
+        }
+        Xp[n + 1] = Xp[n] + vector(0.15, 0, 0);
+        checkSearch("search polydisperse 3D, 506", Xp, Rp, 0.01);
+        forAll(Xp, i)
+        {
+            Xp[i].z() = 0.05;
+        }
+        checkSearch("search polydisperse 2D, 506", Xp, Rp, 0.01);
+
         fbm::contactSearch search;
         search.search(pointField(1, Zero), scalarField(1, 1.0), 1.0);
         fbmTest::check("search: one particle, no pairs",

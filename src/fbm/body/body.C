@@ -25,7 +25,8 @@ Foam::fbm::body::body
 (
     const word& name,
     const dictionary& dict,
-    const fvMesh& mesh
+    const fvMesh& mesh,
+    const indexedOctree<treeDataCell>* tree
 )
 :
     name_(name),
@@ -101,7 +102,11 @@ Foam::fbm::body::body
     }
 
     // The centre must lie in the mesh (on some processor)
-    const bool found = (mesh.findCell(centre_) != -1);
+    const bool found =
+    (
+        (tree ? findCell(mesh, *tree, centre_) : mesh.findCell(centre_))
+     != -1
+    );
     if (!returnReduce(found, orOp<bool>()))
     {
         FatalIOErrorInFunction(dict)
@@ -109,6 +114,28 @@ Foam::fbm::body::body
             << " is outside the mesh (bounds " << mesh.bounds() << ")"
             << exit(FatalIOError);
     }
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::label Foam::fbm::body::findCell
+(
+    const fvMesh& mesh,
+    const indexedOctree<treeDataCell>& tree,
+    const point& p
+)
+{
+    const vector eps(vector::uniform(ROOTVSMALL));
+    const labelList candidates(tree.findBox(treeBoundBox(p - eps, p + eps)));
+    for (const label celli : candidates)
+    {
+        if (mesh.pointInCell(p, celli, polyMesh::CELL_TETS))
+        {
+            return celli;
+        }
+    }
+    return -1;
 }
 
 
@@ -395,6 +422,7 @@ const Foam::labelList& Foam::fbm::body::bandCells(const fvMesh& mesh) const
 void Foam::fbm::body::updateCells
 (
     const fvMesh& mesh,
+    const indexedOctree<treeDataCell>& tree,
     const List<boundBox>& cellBb,
     const label nSubdivision
 )
@@ -408,7 +436,7 @@ void Foam::fbm::body::updateCells
 
     const labelList candidates
     (
-        mesh.cellTree().findBox(treeBoundBox(bb.min(), bb.max()))
+        tree.findBox(treeBoundBox(bb.min(), bb.max()))
     );
 
     DynamicList<label> cells(candidates.size());

@@ -16,6 +16,8 @@ License
 #include "HashSet.H"
 #include "uniformDimensionedFields.H"
 #include "OSspecific.H"
+#include "Random.H"
+#include "IStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -66,7 +68,7 @@ void Foam::fbm::fictitiousBoundary::updateFields()
     forAll(bodies_, bi)
     {
         body& b = bodies_[bi];
-        b.updateCells(mesh_, cellBb_, nSubdivision_);
+        b.updateCells(mesh_, *cellTree_, cellBb_, nSubdivision_);
 
         const labelList& cells = b.cells();
         const scalarList& a = b.alpha();
@@ -144,12 +146,24 @@ void Foam::fbm::fictitiousBoundary::createFiles()
     );
     mkDir(dir);
 
+    summaryFile_.reset(new OFstream(dir/"summary.dat"));
+    summaryFile_->precision(12);
+    summaryFile_()
+        << "# All " << bodies_.size() << " bodies: largest speed"
+        << " |U| + |omega| R [m/s], translational kinetic energy sum"
+        << " M |U|^2/2 [J], mean centre [m], smallest pair gap D - Ri - Rj"
+        << " and wall gap d - R over the collision sub-steps [m] (1e15:"
+        << " none within reach)" << nl
+        << "# Time N maxSpeed kineticEnergy Xx Xy Xz minPairGap minWallGap"
+        << endl;
+
+    const label nSel = selected_.size();
     const label nModels = 1 + compareModels_.size();
-    files_.setSize(nModels*bodies_.size());
+    files_.setSize(nModels*nSel);
     forAll(files_, filei)
     {
-        const label mi = filei/bodies_.size();
-        const body& b = bodies_[filei % bodies_.size()];
+        const label mi = filei/nSel;
+        const body& b = bodies_[selected_[filei % nSel]];
         const word suffix
         (
             mi == 0 ? word::null : word("." + compareModels_[mi - 1].type())
@@ -271,26 +285,54 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     compareModels_(),
     collisions_()
 {
-    const dictionary& bodiesDict = subDict("bodies");
-
-    label n = 0;
-    for (const entry& e : bodiesDict)
+    // Cell bounding boxes, once
+    const pointField& pts = mesh.points();
+    const labelListList& cellPts = mesh.cellPoints();
+    forAll(cellBb_, celli)
     {
-        if (!e.isDict())
+        cellBb_[celli] = boundBox(pts, cellPts[celli], false);
+    }
+
+    // Cell octree as polyMesh::cellTree(), but caching the cell boxes. On
+    // a one-cell-thick 2D mesh every octant split in the empty direction
+    // would cut every cell, the duplicity limit would stop the refinement
+    // early and leave leaves of thousands of cells: the tree's box is
+    // stretched in that direction (2^maxLevel times the mesh depth, the
+    // mesh at its low end) so that the mesh stays in one octant at every
+    // level.
+    {
+        const label maxLevel = 10;
+        treeBoundBox overallBb(pts);
+        Random rndGen(261782);
+        overallBb = overallBb.extend(rndGen, 1e-4);
+        overallBb.min() -= point::uniform(ROOTVSMALL);
+        overallBb.max() += point::uniform(ROOTVSMALL);
+
+        const Vector<label>& sd = mesh.solutionD();
+        for (direction d = 0; d < vector::nComponents; ++d)
         {
-            FatalIOErrorInFunction(bodiesDict)
-                << "Entry '" << e.keyword() << "' in bodies is not a"
-                << " dictionary" << exit(FatalIOError);
+            if (sd[d] < 0)
+            {
+                overallBb.max()[d] = overallBb.min()[d]
+                  + pow(2.0, scalar(maxLevel + 1))*overallBb.span()[d];
+            }
         }
-        ++n;
+
+        cellTree_.reset
+        (
+            new indexedOctree<treeDataCell>
+            (
+                treeDataCell(true, mesh, polyMesh::CELL_TETS),
+                overallBb,
+                maxLevel,
+                10,             // leafsize
+                5.0             // duplicity
+            )
+        );
     }
 
-    bodies_.setSize(n);
-    n = 0;
-    for (const entry& e : bodiesDict)
-    {
-        bodies_.set(n++, new body(e.keyword(), e.dict(), mesh));
-    }
+    readBodies();
+    selectBodies();
 
     // Restart: the state written at the start time overrides the initial
     // state of constant/fbmProperties
@@ -338,26 +380,37 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         break;
     }
 
-    // Density ratios the plain explicit coupling cannot take
-    for (const body& b : bodies_)
+    // Density ratios the plain explicit coupling cannot take (one warning
+    // for the first such body, with the count)
     {
-        if (b.translates() && addedMassCoeff_ == 0 && b.rho() < 1.2*rhoFluid_)
+        label nLight = 0;
+        const body* first = nullptr;
+        for (const body& b : bodies_)
+        {
+            if
+            (
+                b.translates() && addedMassCoeff_ == 0
+             && b.rho() < 1.2*rhoFluid_
+            )
+            {
+                if (!nLight) first = &b;
+                ++nLight;
+            }
+        }
+        if (nLight)
         {
             WarningInFunction
-                << "Body " << b.name() << ": density ratio "
-                << b.rho()/rhoFluid_ << " with the explicit coupling and"
-                << " addedMassCoeff 0 in " << objectPath() << nl
+                << "Body " << first->name() << ": density ratio "
+                << first->rho()/rhoFluid_ << " with the explicit coupling"
+                << " and addedMassCoeff 0 in " << objectPath() << nl
                 << "    is likely to oscillate or diverge (lagged added"
-                << " mass); set addedMassCoeff 0.5 to 1" << endl;
+                << " mass); set addedMassCoeff 0.5 to 1";
+            if (nLight > 1)
+            {
+                Info<< " (" << nLight << " such bodies)";
+            }
+            Info<< endl;
         }
-    }
-
-    // Cell bounding boxes, once
-    const pointField& pts = mesh.points();
-    const labelListList& cellPts = mesh.cellPoints();
-    forAll(cellBb_, celli)
-    {
-        cellBb_[celli] = boundBox(pts, cellPts[celli], false);
     }
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
@@ -388,28 +441,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
     updateFields();
 
-    // Each body must lie in the fluid domain: its covered volume must be
-    // its own (a body cut by the boundary is an input error)
-    for (const body& b : bodies_)
-    {
-        const scalar vol = b.coveredVolume(mesh);
-        const scalar V = b.shape().volume();
-        Info<< "    " << b.name() << ": " << b.shape().type()
-            << " centre " << b.centre() << " volume " << V
-            << ", covered volume " << vol << " ("
-            << returnReduce(b.cells().size(), sumOp<label>())
-            << " cells)" << nl;
-
-        if (mag(vol - V) > 1e-3*V)
-        {
-            FatalIOErrorInFunction(b.dict())
-                << "Body " << b.name() << " (centre " << b.centre()
-                << ") is not wholly inside the mesh: covered volume " << vol
-                << " against " << V << " for the shape"
-                << exit(FatalIOError);
-        }
-    }
-    Info<< endl;
+    checkCoveredVolumes();
 
     createFiles();
 }
@@ -607,7 +639,8 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
     DynamicList<label> cells(bodies_.size());
     forAll(bodies_, bi)
     {
-        const label celli = mesh_.findCell(bodies_[bi].centre());
+        const label celli =
+            body::findCell(mesh_, *cellTree_, bodies_[bi].centre());
         if (celli != -1)
         {
             mine.append(bi);
@@ -631,7 +664,7 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
 
     scalarField d(mine.size()), rho(mine.size());
     labelField id(mine.size());
-    vectorField U(mine.size()), omega(mine.size());
+    vectorField U(mine.size()), omega(mine.size()), F(mine.size());
     forAll(mine, i)
     {
         const body& b = bodies_[mine[i]];
@@ -640,12 +673,14 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
         id[i] = mine[i];
         U[i] = b.U();
         omega[i] = b.omega();
+        F[i] = b.force();
     }
     writeCloudField(dir, "d", d);
     writeCloudField(dir, "rho", rho);
     writeCloudField(dir, "id", id);
     writeCloudField(dir, "U", U);
     writeCloudField(dir, "omega", omega);
+    writeCloudField(dir, "F", F);
 
     // For foamToVTK
     const fileName propsDir(runTime.timePath()/"uniform"/"lagrangian"/cloudName);
@@ -796,8 +831,12 @@ void Foam::fbm::fictitiousBoundary::correctForces
 
     forAll(bodies_, bi)
     {
-        body& b = bodies_[bi];
-        b.setForce(force[bi], torque[bi]);
+        bodies_[bi].setForce(force[bi], torque[bi]);
+    }
+
+    forAll(selected_, si)
+    {
+        const body& b = bodies_[selected_[si]];
 
         Info<< "fbm: " << b.name() << " F = " << b.force()
             << " T = " << b.torque();
@@ -809,9 +848,11 @@ void Foam::fbm::fictitiousBoundary::correctForces
 
         if (Pstream::master())
         {
-            writeLine(files_[bi], b, b.force(), b.torque());
+            writeLine(files_[si], b, b.force(), b.torque());
         }
     }
+
+    writeSummary();
 
     if (mesh_.time().writeTime())
     {
@@ -824,11 +865,12 @@ void Foam::fbm::fictitiousBoundary::correctForces
         calcForces(compareModels_[mi], U, p, nuEff, force, torque);
         if (Pstream::master())
         {
-            forAll(bodies_, bi)
+            forAll(selected_, si)
             {
+                const label bi = selected_[si];
                 writeLine
                 (
-                    files_[(mi + 1)*bodies_.size() + bi],
+                    files_[(mi + 1)*selected_.size() + si],
                     bodies_[bi], force[bi], torque[bi]
                 );
             }

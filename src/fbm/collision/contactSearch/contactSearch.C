@@ -12,6 +12,7 @@ License
 
 #include "contactSearch.H"
 #include "boundBox.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -46,14 +47,26 @@ void Foam::fbm::contactSearch::search
     // Grid over the bounding box of the centres
     boundBox bb(X.first(), X.first());
     scalar Rmax = 0;
+    scalar Rmin = GREAT;
     forAll(X, i)
     {
         bb.add(X[i]);
         Rmax = max(Rmax, R[i]);
+        Rmin = min(Rmin, R[i]);
     }
     const vector span(bb.span());
 
-    scalar width = max(2*Rmax + range, VSMALL);
+    // Particles larger than 4 Rmin are searched by a box query, so that
+    // a few big ones do not size the grid: the grid is sized by the
+    // largest of the others
+    const scalar Rlarge = 4*Rmin;
+    scalar Rgrid = 0;
+    forAll(X, i)
+    {
+        if (R[i] <= Rlarge) Rgrid = max(Rgrid, R[i]);
+    }
+
+    scalar width = max(2*Rgrid + range, VSMALL);
     const scalar maxCells = 4.0*n + 64;
     while (true)
     {
@@ -126,6 +139,8 @@ void Foam::fbm::contactSearch::search
     // lower index
     forAll(X, i)
     {
+        if (R[i] > Rlarge) continue;
+
         const label ci = particleCell_[i];
         const label k = ci/nxy;
         const label j = (ci - k*nxy)/nx;
@@ -142,6 +157,65 @@ void Foam::fbm::contactSearch::search
             {
                 const label p = cellParticles_[s];
                 if (cj == ci && p <= i) continue;
+                if (R[p] > Rlarge) continue;
+
+                if (mag(X[i] - X[p]) <= R[i] + R[p] + range)
+                {
+                    pairs_.append(labelPair(min(i, p), max(i, p)));
+                }
+            }
+        }
+    }
+
+    // Large particles: every cell within R + Rmax + range; a pair of two
+    // large ones is taken from the lower index
+    if (Rmax <= Rlarge)
+    {
+        return;
+    }
+    forAll(X, i)
+    {
+        if (R[i] <= Rlarge) continue;
+
+        const scalar reach = R[i] + Rmax + range;
+        label lo[3], hi[3];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (cellWidth[d] > 0)
+            {
+                lo[d] = max
+                (
+                    label(0),
+                    label(std::floor
+                    (
+                        (X[i][d] - reach - bb.min()[d])/cellWidth[d]
+                    ))
+                );
+                hi[d] = min
+                (
+                    nCells_[d] - 1,
+                    label(std::floor
+                    (
+                        (X[i][d] + reach - bb.min()[d])/cellWidth[d]
+                    ))
+                );
+            }
+            else
+            {
+                lo[d] = 0;
+                hi[d] = 0;
+            }
+        }
+
+        for (label kk = lo[2]; kk <= hi[2]; ++kk)
+        for (label jj = lo[1]; jj <= hi[1]; ++jj)
+        for (label ll = lo[0]; ll <= hi[0]; ++ll)
+        {
+            const label cj = ll + nx*jj + nxy*kk;
+            for (label s = cellStart_[cj]; s < cellStart_[cj + 1]; ++s)
+            {
+                const label p = cellParticles_[s];
+                if (p == i || (R[p] > Rlarge && p < i)) continue;
 
                 if (mag(X[i] - X[p]) <= R[i] + R[p] + range)
                 {

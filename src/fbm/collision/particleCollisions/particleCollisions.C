@@ -78,35 +78,121 @@ Foam::fbm::particleCollisions::particleCollisions
             "maxSubCycles", 1000, [](label n){ return n >= 1; }
         )
     ),
+    dampingRatio_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
+        )
+    ),
     dtSubMax_(GREAT),
     X_(bodies.size()),
-    R_(bodies.size())
+    R_(bodies.size()),
+    mass_(bodies.size(), GREAT),
+    minPairGap_(GREAT),
+    minWallGap_(GREAT)
 {
-    // Stiffest contact at the largest radius against the smallest mass
+    // Stiffest contact: each pair of (radius, mass) classes with its
+    // reduced mass, each class against a wall. A body that does not
+    // translate has an infinite mass. With more than maxClasses classes
+    // (a wide size distribution), the bound of the largest radius against
+    // the smallest mass.
+    const label maxClasses = 64;
+    DynamicList<scalar> classR;
+    DynamicList<scalar> classM;
+    bool anyMoving = false;
+    bool tooMany = false;
     scalar Rmax = 0;
     scalar mMin = GREAT;
     for (const body& b : bodies)
     {
-        Rmax = max(Rmax, b.shape().radius());
+        const scalar R = b.shape().radius();
+        const scalar m = b.translates() ? b.mass() : GREAT;
+        Rmax = max(Rmax, R);
         if (b.translates())
         {
-            mMin = min(mMin, b.mass());
+            anyMoving = true;
+            mMin = min(mMin, m);
+        }
+        if (tooMany) continue;
+
+        bool found = false;
+        forAll(classR, c)
+        {
+            if (classR[c] == R && classM[c] == m)
+            {
+                found = true;
+                break;
+            }
+        }
+        if (!found)
+        {
+            classR.append(R);
+            classM.append(m);
+            tooMany = (classR.size() > maxClasses);
         }
     }
 
-    if (mMin < GREAT)
+    if (anyMoving)
     {
-        const scalar kP = depth_*model_->pairStiffness(Rmax, Rmax);
-        const scalar kW = depth_*model_->wallStiffness(Rmax);
-        const scalar omega2 = max(kP/(0.5*mMin), kW/mMin);
+        scalar kPmax = 0;
+        scalar kWmax = 0;
+        scalar omega2 = 0;
+        if (tooMany)
+        {
+            kPmax = depth_*model_->pairStiffness(Rmax, Rmax);
+            kWmax = depth_*model_->wallStiffness(Rmax);
+            omega2 = max(kPmax/(0.5*mMin), kWmax/mMin);
+        }
+        else
+        {
+            forAll(classR, a)
+            {
+                const scalar ma = classM[a];
+                if (ma < GREAT)
+                {
+                    const scalar kW = depth_*model_->wallStiffness(classR[a]);
+                    kWmax = max(kWmax, kW);
+                    omega2 = max(omega2, kW/ma);
+                }
+                for (label b = a; b < classR.size(); ++b)
+                {
+                    const scalar mb = classM[b];
+                    if (ma == GREAT && mb == GREAT) continue;
+
+                    const scalar mRed =
+                        (ma == mb) ? 0.5*ma
+                      : (ma == GREAT) ? mb
+                      : (mb == GREAT) ? ma
+                      : ma*mb/(ma + mb);
+                    const scalar kP =
+                        depth_*model_->pairStiffness(classR[a], classR[b]);
+                    kPmax = max(kPmax, kP);
+                    omega2 = max(omega2, kP/mRed);
+                }
+            }
+        }
+
         if (omega2 > 0)
         {
             const scalar tc = constant::mathematical::pi/Foam::sqrt(omega2);
             dtSubMax_ = tc/nStepsPerContact_;
         }
 
-        Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kP
-            << " wall " << kW << ", smallest mass " << mMin
+        forAll(bodies, i)
+        {
+            if (bodies[i].translates()) mass_[i] = bodies[i].mass();
+        }
+        if (dampingRatio_ > 0)
+        {
+            Info<< "fbm: collisions: normal damping ratio " << dampingRatio_
+                << nl;
+        }
+
+        Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kPmax
+            << " wall " << kWmax << ", smallest mass " << mMin
+            << " (" << (tooMany ? label(0) : classR.size())
+            << " radius/mass classes)"
             << ": contact time " << nStepsPerContact_*dtSubMax_
             << ", largest sub-step " << dtSubMax_
             << " (nStepsPerContact " << nStepsPerContact_
@@ -153,6 +239,29 @@ void Foam::fbm::particleCollisions::contactForces
             const vector Fij(law.pairForce(X_[i], R_[i], X_[j], R_[j]));
             F[i] += Fij;
             F[j] -= Fij;
+            minPairGap_ = min
+            (
+                minPairGap_, mag(X_[i] - X_[j]) - R_[i] - R_[j]
+            );
+
+            if (dampingRatio_ > 0)
+            {
+                const scalar mi = mass_[i];
+                const scalar mj = mass_[j];
+                if (mi == GREAT && mj == GREAT) continue;
+                const scalar mr =
+                    (mi == GREAT) ? mj : (mj == GREAT) ? mi : mi*mj/(mi + mj);
+                const vector n((X_[i] - X_[j])/max(mag(X_[i] - X_[j]), VSMALL));
+                const scalar k = depth_*law.pairStiffness(R_[i], R_[j]);
+                // Force per unit depth, as the law's (times depth below)
+                const vector Fd
+                (
+                    -(2*dampingRatio_*Foam::sqrt(k*mr)/depth_)
+                   *((bodies[i].U() - bodies[j].U()) & n)*n
+                );
+                F[i] += Fd;
+                F[j] -= Fd;
+            }
         }
     }
 
@@ -178,6 +287,16 @@ void Foam::fbm::particleCollisions::contactForces
             }
             if (d <= R + 0.5*range)
             {
+                minWallGap_ = min(minWallGap_, d - R);
+                if (dampingRatio_ > 0)
+                {
+                    const point Xw(walls_.image(w, X));
+                    const vector n((X - Xw)/max(mag(X - Xw), VSMALL));
+                    const scalar k = depth_*law.wallStiffness(R);
+                    F[i] -=
+                        (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
+                       *(b.U() & n)*n;
+                }
                 F[i] += law.wallForce(X, R, walls_.image(w, X));
             }
         }
@@ -210,6 +329,8 @@ void Foam::fbm::particleCollisions::move
             << " maxSubCycles" << exit(FatalIOError);
     }
     const scalar dtSub = dt/n;
+    minPairGap_ = GREAT;
+    minWallGap_ = GREAT;
 
     Info<< "fbm: collisions: " << n << " sub-steps of " << dtSub << nl;
 
