@@ -18,6 +18,7 @@ License
 #include "OSspecific.H"
 #include "Random.H"
 #include "IStringStream.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -119,6 +120,42 @@ void Foam::fbm::fictitiousBoundary::updateFields()
                         );
                     }
                 }
+            }
+        }
+    }
+
+    if (forcing_ == forcingType::linearProfile && coupled_)
+    {
+        // Face neighbours across coupled (processor, cyclic) patches of
+        // inside cells: this side knows them from the other side's
+        // distance and body index
+        scalarField nbrId;
+        syncTools::swapBoundaryCellList(mesh_, distance_, nbrDistance_);
+        syncTools::swapBoundaryCellList(mesh_, id, nbrId);
+
+        const label nInternal = mesh_.nInternalFaces();
+        for (const polyPatch& pp : mesh_.boundaryMesh())
+        {
+            if (!pp.coupled()) continue;
+
+            const labelUList& faceCells = pp.faceCells();
+            forAll(faceCells, i)
+            {
+                const label bFacei = pp.start() + i - nInternal;
+                if (nbrDistance_[bFacei] > 0) continue;
+
+                const label celli = faceCells[i];
+                const label bj = label(nbrId[bFacei]);
+                const body& b = bodies_[bj];
+                const scalar d =
+                    b.shape().signedDistance(C[celli] - b.centre());
+                if (d < distance_[celli])
+                {
+                    distance_[celli] = d;
+                    Us[celli] = b.velocityAt(C[celli]);
+                    id[celli] = bj;
+                }
+                active.insert(celli);
             }
         }
     }
@@ -279,6 +316,22 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         dimensionedScalar("bodyID", dimless, -1)
     ),
     distance_(mesh.nCells(), GREAT),
+    coupled_
+    (
+        returnReduce
+        (
+            [&mesh]()
+            {
+                for (const polyPatch& pp : mesh.boundaryMesh())
+                {
+                    if (pp.coupled()) return true;
+                }
+                return false;
+            }(),
+            orOp<bool>()
+        )
+    ),
+    nbrDistance_(mesh.nFaces() - mesh.nInternalFaces(), GREAT),
     lambda_(mesh.nCells(), Zero),
     scratch_(mesh.nCells(), Zero),
     forceModel_(forceModel::New(*this)),
@@ -709,6 +762,32 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
     const scalarField& alpha = alpha_;
     const vectorField& Us = Us_;
 
+    const cellList& cellFaces = mesh_.cells();
+    const label nInternal = mesh_.nInternalFaces();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    // The diagonal a_P of a cell as in a serial run: faces on coupled
+    // patches (processor, cyclic) keep their coefficients in
+    // internalCoeffs, not in diag
+    auto cellDiag = [&](const label celli)
+    {
+        scalar aP = diag[celli];
+        if (coupled_)
+        {
+            for (const label facei : cellFaces[celli])
+            {
+                if (facei < nInternal) continue;
+                const label patchi = patches.whichPatch(facei);
+                if (patches[patchi].coupled())
+                {
+                    aP += UEqn.internalCoeffs()[patchi]
+                        [facei - patches[patchi].start()].component(0);
+                }
+            }
+        }
+        return aP;
+    };
+
     if (forcing_ == forcingType::volumeFraction)
     {
         for (const label celli : activeCells_)
@@ -716,7 +795,7 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
             const scalar a = alpha[celli];
             const scalar k =
                 (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
-            lambda_[celli] = k*diag[celli];
+            lambda_[celli] = k*cellDiag(celli);
         }
     }
     else
@@ -726,12 +805,11 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         const scalarField& lower = m.lower();
         const labelUList& own = mesh_.faceOwner();
         const labelUList& nei = mesh_.faceNeighbour();
-        const cellList& cellFaces = mesh_.cells();
-        const label nInternal = mesh_.nInternalFaces();
 
         for (const label celli : activeCells_)
         {
             const scalar d = distance_[celli];
+            const scalar aP = cellDiag(celli);
             scalar k = penaltyMax_;
 
             if (d > 0)
@@ -740,21 +818,36 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
                 scalar S = 0;
                 for (const label facei : cellFaces[celli])
                 {
-                    if (facei >= nInternal) continue;
-
-                    const bool isOwner = (own[facei] == celli);
-                    const label nbr = isOwner ? nei[facei] : own[facei];
-                    if (distance_[nbr] <= 0)
+                    if (facei < nInternal)
                     {
-                        const scalar aN =
-                            -(isOwner ? upper[facei] : lower[facei]);
-                        S += max(aN, scalar(0))*(-distance_[nbr]);
+                        const bool isOwner = (own[facei] == celli);
+                        const label nbr = isOwner ? nei[facei] : own[facei];
+                        if (distance_[nbr] <= 0)
+                        {
+                            const scalar aN =
+                                -(isOwner ? upper[facei] : lower[facei]);
+                            S += max(aN, scalar(0))*(-distance_[nbr]);
+                        }
+                    }
+                    else if (coupled_)
+                    {
+                        // The neighbour on the other side of a coupled
+                        // face: its coefficient is in boundaryCoeffs
+                        const label patchi = patches.whichPatch(facei);
+                        const scalar dN = nbrDistance_[facei - nInternal];
+                        if (patches[patchi].coupled() && dN <= 0)
+                        {
+                            const scalar aN = UEqn.boundaryCoeffs()[patchi]
+                                [facei - patches[patchi].start()]
+                               .component(0);
+                            S += max(aN, scalar(0))*(-dN);
+                        }
                     }
                 }
-                S /= diag[celli];
+                S /= aP;
                 k = (S > 0) ? min(S/d, penaltyMax_) : 0;
             }
-            lambda_[celli] = k*diag[celli];
+            lambda_[celli] = k*aP;
         }
     }
 
