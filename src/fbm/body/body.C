@@ -101,7 +101,11 @@ Foam::fbm::body::body
         }
     }
 
-    // The centre must lie in the mesh (on some processor)
+    // The centre must lie in the mesh (on some processor). The cell test
+    // uses the mesh's tet decomposition, which is built collectively: build
+    // it on every processor first, not only where the centre has candidate
+    // cells (that deadlocked a decomposed run)
+    (void)mesh.tetBasePtIs();
     const bool found =
     (
         (tree ? findCell(mesh, *tree, centre_) : mesh.findCell(centre_))
