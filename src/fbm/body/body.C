@@ -367,14 +367,14 @@ void Foam::fbm::body::writeState(dictionary& dict) const
 }
 
 
-Foam::scalar Foam::fbm::body::coveredVolume(const fvMesh& mesh) const
+Foam::scalar Foam::fbm::body::localCoveredVolume(const fvMesh& mesh) const
 {
     scalar vol = 0;
     forAll(cells_, i)
     {
         vol += alpha_[i]*mesh.V()[cells_[i]];
     }
-    return returnReduce(vol, sumOp<scalar>());
+    return vol;
 }
 
 

@@ -502,6 +502,19 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalarList Foam::fbm::fictitiousBoundary::coveredVolumes() const
+{
+    scalarList vol(bodies_.size());
+    forAll(bodies_, bi)
+    {
+        vol[bi] = bodies_[bi].localCoveredVolume(mesh_);
+    }
+    Pstream::listCombineGather(vol, plusEqOp<scalar>());
+    Pstream::listCombineScatter(vol);
+    return vol;
+}
+
+
 Foam::scalar Foam::fbm::fictitiousBoundary::maxDeltaT() const
 {
     if (maxBodyCo_ >= VGREAT)
@@ -511,30 +524,36 @@ Foam::scalar Foam::fbm::fictitiousBoundary::maxDeltaT() const
 
     const Vector<label>& solD = mesh_.solutionD();
 
-    scalar dtMax = VGREAT;
-    for (const body& b : bodies_)
+    // Smallest cell size (in the solved directions) under each body, all
+    // bodies in one reduction
+    scalarList h(bodies_.size(), VGREAT);
+    forAll(bodies_, bi)
     {
-        const scalar speed =
-            mag(b.U()) + mag(b.omega())*b.shape().radius();
-
-        // Smallest cell size (in the solved directions) under the body
-        scalar h = VGREAT;
-        for (const label celli : b.cells())
+        for (const label celli : bodies_[bi].cells())
         {
             const vector span(cellBb_[celli].span());
             for (direction d = 0; d < vector::nComponents; ++d)
             {
                 if (solD[d] > 0)
                 {
-                    h = min(h, span[d]);
+                    h[bi] = min(h[bi], span[d]);
                 }
             }
         }
-        reduce(h, minOp<scalar>());
+    }
+    Pstream::listCombineGather(h, minEqOp<scalar>());
+    Pstream::listCombineScatter(h);
 
-        if (speed > VSMALL && h < VGREAT)
+    scalar dtMax = VGREAT;
+    forAll(bodies_, bi)
+    {
+        const body& b = bodies_[bi];
+        const scalar speed =
+            mag(b.U()) + mag(b.omega())*b.shape().radius();
+
+        if (speed > VSMALL && h[bi] < VGREAT)
         {
-            dtMax = min(dtMax, maxBodyCo_*h/speed);
+            dtMax = min(dtMax, maxBodyCo_*h[bi]/speed);
         }
     }
 
@@ -602,12 +621,14 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
 
     // A body whose covered volume falls short of its own has reached the
     // boundary of the domain
+    const scalarList vol(coveredVolumes());
     bool inside = true;
-    for (const body& b : bodies_)
+    forAll(bodies_, bi)
     {
+        const body& b = bodies_[bi];
         if (!b.moves()) continue;
 
-        if (b.coveredVolume(mesh_) < (1 - 1e-3)*b.shape().volume())
+        if (vol[bi] < (1 - 1e-3)*b.shape().volume())
         {
             Info<< "fbm: body " << b.name() << " reaches the domain boundary"
                 << " at time " << mesh_.time().timeName() << " (centre "

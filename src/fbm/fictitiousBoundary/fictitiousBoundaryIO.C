@@ -232,18 +232,7 @@ void Foam::fbm::fictitiousBoundary::checkCoveredVolumes() const
     // sampling of a cut cell (leaf size delta = h/2^nSubdivision) is
     // accurate to about (delta/R)^2 relative: the tolerance is that or
     // 1e-3, whichever is larger.
-    const scalarField& V = mesh_.V();
-    scalarField vol(bodies_.size(), Zero);
-    forAll(bodies_, bi)
-    {
-        const body& b = bodies_[bi];
-        forAll(b.cells(), i)
-        {
-            vol[bi] += b.alpha()[i]*V[b.cells()[i]];
-        }
-    }
-    Pstream::listCombineGather(vol, plusEqOp<scalar>());
-    Pstream::listCombineScatter(vol);
+    const scalarList vol(coveredVolumes());
 
     // Largest cell size over the solution directions
     const Vector<label>& sd = mesh_.solutionD();

@@ -288,16 +288,16 @@ void Foam::fbm::particleCollisions::contactForces
             if (d <= R + 0.5*range)
             {
                 minWallGap_ = min(minWallGap_, d - R);
+                const point Xw(walls_.image(w, X));
                 if (dampingRatio_ > 0)
                 {
-                    const point Xw(walls_.image(w, X));
                     const vector n((X - Xw)/max(mag(X - Xw), VSMALL));
                     const scalar k = depth_*law.wallStiffness(R);
                     F[i] -=
                         (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
                        *(b.U() & n)*n;
                 }
-                F[i] += law.wallForce(X, R, walls_.image(w, X));
+                F[i] += law.wallForce(X, R, Xw);
             }
         }
     }
