@@ -660,6 +660,11 @@ void Foam::fbm::fictitiousBoundary::writeState() const
         false
     );
     io.writeHeader(os, IOdictionary::typeName);
+
+    // The entries are built through string streams of the default
+    // precision (controlDict's writePrecision): full precision for an
+    // exact restart whatever that is
+    const unsigned oldPrecision = IOstream::defaultPrecision(17);
     for (const body& b : bodies_)
     {
         dictionary d;
@@ -668,6 +673,7 @@ void Foam::fbm::fictitiousBoundary::writeState() const
         d.write(os, false);
         os.endBlock();
     }
+    IOstream::defaultPrecision(oldPrecision);
     IOobject::writeEndDivider(os);
 }
 

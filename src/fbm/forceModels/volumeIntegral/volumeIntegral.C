@@ -14,6 +14,7 @@ License
 #include "fictitiousBoundary.H"
 #include "surfaceFields.H"
 #include "fvcGrad.H"
+#include "bitSet.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -68,6 +69,56 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
     // Zero field of mesh size, returned zero
     scalarField& alphaB = fb.scratch();
 
+    // Coupled (processor, cyclic) faces: the other side's solid fraction
+    // and body index from the evaluated patch fields of alpha.solid and
+    // bodyID, the interpolation weight, and for each body the cells on this
+    // side next to that body's cells on the other side. Elsewhere on the
+    // boundary alpha has zero gradient (weight 1, no neighbour).
+    const label nBFaces = mesh.nFaces() - nInternal;
+    scalarField nbrAlpha(nBFaces, Zero);
+    labelList nbrBody(nBFaces, -1);
+    scalarField wB(nBFaces, scalar(1));
+    bitSet onCoupled(mesh.nCells());
+    labelListList nbrCells(bodies.size());
+    {
+        const volScalarField& alpha = fb.alpha();
+        const volScalarField& id = fb.bodyID();
+        List<DynamicList<label>> cellsOf(bodies.size());
+        forAll(mesh.boundary(), patchi)
+        {
+            const fvPatch& pp = mesh.boundary()[patchi];
+            if (!pp.coupled()) continue;
+
+            const scalarField a
+            (
+                alpha.boundaryField()[patchi].patchNeighbourField()
+            );
+            const scalarField n
+            (
+                id.boundaryField()[patchi].patchNeighbourField()
+            );
+            const scalarField& pw = mesh.weights().boundaryField()[patchi];
+            const labelUList& faceCells = pp.faceCells();
+            forAll(pp, i)
+            {
+                const label bFacei = pp.start() + i - nInternal;
+                wB[bFacei] = pw[i];
+                onCoupled.set(faceCells[i]);
+                if (n[i] >= 0 && a[i] > 0)
+                {
+                    nbrAlpha[bFacei] = a[i];
+                    nbrBody[bFacei] = label(n[i]);
+                    cellsOf[nbrBody[bFacei]].append(faceCells[i]);
+                }
+            }
+        }
+        forAll(cellsOf, bi)
+        {
+            nbrCells[bi].transfer(cellsOf[bi]);
+        }
+    }
+    const bool coupled = onCoupled.any();
+
     forAll(bodies, bi)
     {
         const body& b = bodies[bi];
@@ -78,10 +129,25 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
             alphaB[cells[i]] = b.alpha()[i];
         }
 
+        // The band, with the cells where grad(alpha) has a part from the
+        // other side of a coupled face
+        labelList extended;
+        if (coupled)
+        {
+            labelHashSet all(b.bandCells(mesh));
+            for (const label celli : cells)
+            {
+                if (onCoupled.test(celli)) all.insert(celli);
+            }
+            all.insert(nbrCells[bi]);
+            extended = all.sortedToc();
+        }
+        const labelList& band = coupled ? extended : b.bandCells(mesh);
+
         vector F(Zero);
         vector T(Zero);
 
-        for (const label celli : b.bandCells(mesh))
+        for (const label celli : band)
         {
             // Gauss gradient of this body's alpha times the cell volume
             vector gradAlphaV(Zero);
@@ -96,8 +162,15 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
                 }
                 else
                 {
-                    // Boundary faces: zero gradient
-                    gradAlphaV += alphaB[celli]*Sf[facei];
+                    const label bFacei = facei - nInternal;
+                    const scalar af =
+                        wB[bFacei]*alphaB[celli]
+                      + (
+                            nbrBody[bFacei] == bi
+                          ? (1 - wB[bFacei])*nbrAlpha[bFacei]
+                          : 0
+                        );
+                    gradAlphaV += af*Sf[facei];
                 }
             }
 
