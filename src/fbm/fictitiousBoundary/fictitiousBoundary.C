@@ -581,11 +581,14 @@ void Foam::fbm::fictitiousBoundary::checkSpeed(const body& b) const
 
 bool Foam::fbm::fictitiousBoundary::moveBodies()
 {
+    times_.newStep();
+
     bool moved = false;
     const scalar dt = mesh_.time().deltaTValue();
 
     if (collisions_.valid())
     {
+        phaseTimes::scope motionTime(times_, phaseTimes::motion);
         collisions_->move(bodies_, g_, rhoFluid_, addedMassCoeff_, dt);
         for (const body& b : bodies_)
         {
@@ -596,6 +599,7 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
     }
     else
     {
+        phaseTimes::scope motionTime(times_, phaseTimes::motion);
         for (body& b : bodies_)
         {
             if (!b.moves()) continue;
@@ -611,6 +615,7 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
         return true;
     }
 
+    phaseTimes::scope cellsTime(times_, phaseTimes::cells);
     updateFields();
 
     // With collisions the walls are handled by the contact
@@ -784,6 +789,8 @@ void Foam::fbm::fictitiousBoundary::writeCloud() const
 
 void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
 {
+    phaseTimes::scope forcingTime(times_, phaseTimes::forcing);
+
     scalarField& diag = UEqn.diag();
     vectorField& source = UEqn.source();
     const scalarField& alpha = alpha_;
@@ -947,54 +954,74 @@ void Foam::fbm::fictitiousBoundary::correctForces
     }
 
     List<vector> force, torque;
-    calcForces(forceModel_(), U, p, nuEff, force, torque);
+    {
+        phaseTimes::scope forcesTime(times_, phaseTimes::forces);
+        calcForces(forceModel_(), U, p, nuEff, force, torque);
+    }
 
     forAll(bodies_, bi)
     {
         bodies_[bi].setForce(force[bi], torque[bi]);
     }
 
-    forAll(selected_, si)
     {
-        const body& b = bodies_[selected_[si]];
+        phaseTimes::scope outputTime(times_, phaseTimes::output);
 
-        Info<< "fbm: " << b.name() << " F = " << b.force()
-            << " T = " << b.torque();
-        if (b.hasCoefficients())
+        forAll(selected_, si)
         {
-            Info<< " Cd = " << b.Cd(rhoFluid_) << " Cl = " << b.Cl(rhoFluid_);
-        }
-        Info<< nl;
+            const body& b = bodies_[selected_[si]];
 
-        if (Pstream::master())
-        {
-            writeLine(files_[si], b, b.force(), b.torque());
-        }
-    }
-
-    writeSummary();
-
-    if (mesh_.time().writeTime())
-    {
-        writeState();
-        writeCloud();
-    }
-
-    forAll(compareModels_, mi)
-    {
-        calcForces(compareModels_[mi], U, p, nuEff, force, torque);
-        if (Pstream::master())
-        {
-            forAll(selected_, si)
+            Info<< "fbm: " << b.name() << " F = " << b.force()
+                << " T = " << b.torque();
+            if (b.hasCoefficients())
             {
-                const label bi = selected_[si];
-                writeLine
-                (
-                    files_[(mi + 1)*selected_.size() + si],
-                    bodies_[bi], force[bi], torque[bi]
-                );
+                Info<< " Cd = " << b.Cd(rhoFluid_)
+                    << " Cl = " << b.Cl(rhoFluid_);
+            }
+            Info<< nl;
+
+            if (Pstream::master())
+            {
+                writeLine(files_[si], b, b.force(), b.torque());
             }
         }
+
+        writeSummary();
+
+        if (mesh_.time().writeTime())
+        {
+            writeState();
+            writeCloud();
+        }
+
+        // Force models computed for comparison only: counted as output
+        forAll(compareModels_, mi)
+        {
+            calcForces(compareModels_[mi], U, p, nuEff, force, torque);
+            if (Pstream::master())
+            {
+                forAll(selected_, si)
+                {
+                    const label bi = selected_[si];
+                    writeLine
+                    (
+                        files_[(mi + 1)*selected_.size() + si],
+                        bodies_[bi], force[bi], torque[bi]
+                    );
+                }
+            }
+        }
+    }
+
+    // The cost split at write times and after the last step
+    const Time& runTime = mesh_.time();
+    if
+    (
+        runTime.writeTime()
+     || runTime.value() > runTime.endTime().value() - 0.5*runTime.deltaTValue()
+    )
+    {
+        times_.report(Info);
     }
 }
 

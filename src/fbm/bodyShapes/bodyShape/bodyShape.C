@@ -49,7 +49,7 @@ Foam::fbm::bodyShape::bodyShape
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::fbm::bodyShape::boxFraction
+Foam::scalar Foam::fbm::bodyShape::sampleFraction
 (
     const boundBox& bb,
     const label nSubdivision
@@ -109,7 +109,7 @@ Foam::scalar Foam::fbm::bodyShape::boxFraction
         }
         if (used)
         {
-            sum += boxFraction(boundBox(cMin, cMax), nSubdivision - 1);
+            sum += sampleFraction(boundBox(cMin, cMax), nSubdivision - 1);
             ++nChildren;
         }
     }

@@ -39,7 +39,8 @@ Foam::fbm::bodyShapes::circle::circle
 )
 :
     bodyShape(dict, mesh),
-    radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; }))
+    radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; })),
+    axes_(direction(0))
 {
     if (mesh.nSolutionD() != 2)
     {
@@ -49,6 +50,69 @@ Foam::fbm::bodyShapes::circle::circle
             << " solution directions: use 'type sphere;' in 3D"
             << exit(FatalIOError);
     }
+
+    label n = 0;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solutionD()[d] >= 0)
+        {
+            axes_[n++] = d;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::bodyShapes::circle::triangleArea
+(
+    const vector2D& a,
+    const vector2D& b
+) const
+{
+    const scalar R2 = sqr(radius_);
+
+    // Points where the edge a + t (b - a), 0 < t < 1, crosses the circle
+    const vector2D d(b - a);
+    const scalar A = d & d;
+    if (A < VSMALL*R2)
+    {
+        return 0;
+    }
+    const scalar B = a & d;
+    const scalar C = (a & a) - R2;
+    const scalar disc = sqr(B) - A*C;
+
+    FixedList<vector2D, 4> p;
+    label n = 0;
+    p[n++] = a;
+    if (disc > 0)
+    {
+        const scalar root = std::sqrt(disc);
+        const scalar t1 = (-B - root)/A;
+        const scalar t2 = (-B + root)/A;
+        if (t1 > 0 && t1 < 1) p[n++] = a + t1*d;
+        if (t2 > 0 && t2 < 1) p[n++] = a + t2*d;
+    }
+    p[n++] = b;
+
+    // Inside the disk a triangle, outside a sector
+    scalar area = 0;
+    for (label i = 0; i < n - 1; ++i)
+    {
+        const vector2D& q = p[i];
+        const vector2D& r = p[i + 1];
+        const scalar cross = q.x()*r.y() - q.y()*r.x();
+        if (magSqr(0.5*(q + r)) < R2)
+        {
+            area += 0.5*cross;
+        }
+        else
+        {
+            area += 0.5*R2*std::atan2(cross, q & r);
+        }
+    }
+    return area;
 }
 
 
@@ -72,6 +136,46 @@ Foam::vector Foam::fbm::bodyShapes::circle::normal(const vector& r) const
         return inPlane(vector(1, 1, 1))/mag(inPlane(vector(1, 1, 1)));
     }
     return rp/m;
+}
+
+
+Foam::scalar Foam::fbm::bodyShapes::circle::boxFraction
+(
+    const boundBox& bb,
+    const label
+) const
+{
+    const direction i = axes_[0], j = axes_[1];
+    const scalar x0 = bb.min()[i], x1 = bb.max()[i];
+    const scalar y0 = bb.min()[j], y1 = bb.max()[j];
+    const scalar boxArea = (x1 - x0)*(y1 - y0);
+    const scalar R2 = sqr(radius_);
+
+    // Wholly outside: the nearest point of the box; wholly inside: the
+    // farthest corner
+    const scalar nx = max(x0, min(scalar(0), x1));
+    const scalar ny = max(y0, min(scalar(0), y1));
+    if (boxArea <= 0 || sqr(nx) + sqr(ny) >= R2)
+    {
+        return 0;
+    }
+    if (sqr(max(mag(x0), mag(x1))) + sqr(max(mag(y0), mag(y1))) <= R2)
+    {
+        return 1;
+    }
+
+    // The corners counter-clockwise
+    const vector2D c[4] =
+    {
+        vector2D(x0, y0), vector2D(x1, y0), vector2D(x1, y1), vector2D(x0, y1)
+    };
+    scalar area = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        area += triangleArea(c[k], c[(k + 1) % 4]);
+    }
+
+    return max(scalar(0), min(scalar(1), area/boxArea));
 }
 
 

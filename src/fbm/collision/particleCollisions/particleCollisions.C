@@ -85,10 +85,10 @@ Foam::fbm::particleCollisions::particleCollisions
             "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
+    mass_(bodies.size(), GREAT),
     dtSubMax_(GREAT),
     X_(bodies.size()),
     R_(bodies.size()),
-    mass_(bodies.size(), GREAT),
     minPairGap_(GREAT),
     minWallGap_(GREAT)
 {
