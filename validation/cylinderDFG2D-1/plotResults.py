@@ -1,19 +1,23 @@
 #!/usr/bin/python3
 """Tabulate and plot the DFG 2D-1 mesh study of fbmFoam.
 
-Reads results.csv (level,cells,cD,cL,dp,wall_s, one line per mesh level,
-written by ./Allrun; cD, cL by fbmFoam's force model, momentumExchange),
+Reads results.csv (level,cells,cD,cL,dp,wall_s,cpu_s, one line per mesh
+level, written by ./Allrun; cD, cL by fbmFoam's force model,
+momentumExchange),
 optionally results-volumeIntegral.csv (same columns; cD, cL by the paper's
 volume integral, Eq. 14, written beside it through compareForceModels) and
-the literature data in validationData/, and writes
+the literature data in validationData/ and the body-fitted OpenFOAM runs
+of bodyFitted/Allrun (validationData/bodyFitted.csv: source,level,cells,
+cD,cL,dp,cD_err_pct,cL_err_pct,dp_err_pct,cpu_s,wall_s), and writes
 
     table.md          our values and errors in % against the high-accuracy
                       reference, the volume-integral cD and cL beside them,
                       and the paper's FEM-FBM Table 1 and body-fitted runs
-    convergence.png   |error| in % of cD, cL and dp against cells and
-                      against fbmFoam wall time (log-log), with the
-                      volume-integral cD (dashed), the paper's FEM-FBM
-                      errors and body-fitted OpenFOAM runs
+    convergence.png   |error| in % of cD, cL and dp (one row each) against
+                      cells and against CPU time (log-log): fbmFoam, its
+                      volume-integral cD and cL (dashed), the paper's
+                      FEM-FBM errors and body-fitted simpleFoam and
+                      pimpleFoam
 
 Usage:
     plotResults.py [-h] [-i results.csv] [-v results-volumeIntegral.csv]
@@ -37,11 +41,16 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import ticker  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "validationData")
 
 QUANTITIES = ("cD", "cL", "dp")
+
+# fbmFoam levels whose cost is not that of a run from rest to t = 10,
+# marked on the cost axes (see README.md)
+COST_NOTES = {4: "mapped from level 3,\nt = 0-4 only"}
 
 # Accepted |error| in % at the finest level for --check (acceptance of the
 # validation issue); cL is printed but not checked
@@ -79,7 +88,8 @@ def load_results(path, reference):
     """Rows of a results csv, with errors in %, sorted by cells."""
     rows = []
     for r in read_csv(path):
-        row = {k: number(r.get(k)) for k in ("level", "cells", "cD", "cL", "dp", "wall_s")}
+        row = {k: number(r.get(k))
+               for k in ("level", "cells", "cD", "cL", "dp", "wall_s", "cpu_s")}
         for q in QUANTITIES:
             row[q + "_err"] = error_pct(row[q], reference[q])
         rows.append(row)
@@ -107,7 +117,10 @@ def load(results_path, volume_integral_path):
     for r in read_csv(os.path.join(DATA, "bodyFitted.csv")):
         row = {k: number(v) for k, v in r.items() if k != "source"}
         row["source"] = r["source"]
+        for q in QUANTITIES:
+            row[q + "_err"] = row[q + "_err_pct"]
         body_fitted.append(row)
+    body_fitted.sort(key=lambda r: (r["source"] != "simpleFoam", r["cells"]))
     return reference, interval, ours, volume_integral, paper, body_fitted
 
 
@@ -131,16 +144,24 @@ def write_table(path, reference, interval, ours, volume_integral, paper,
     w("Forcing `linearProfile`, forces by `momentumExchange` (fbmFoam's")
     w("default; `results.csv`).")
     w("")
-    w("| level | cells | cD | err cD % | cL | err cL % | dp | err dp % | wall s |")
-    w("|---|---|---|---|---|---|---|---|---|")
+    w("| level | cells | cD | err cD % | cL | err cL % | dp | err dp % "
+      "| CPU s | wall s |")
+    w("|---|---|---|---|---|---|---|---|---|---|")
     for r in ours:
         w(
             f"| {fmt(r['level'], 0)} | {fmt(r['cells'], 0)} "
             f"| {fmt(r['cD'], 4)} | {fmt_err(r['cD_err'])} "
             f"| {fmt(r['cL'], 5)} | {fmt_err(r['cL_err'])} "
             f"| {fmt(r['dp'], 5)} | {fmt_err(r['dp_err'])} "
-            f"| {fmt(r['wall_s'], 1)} |"
+            f"| {fmt(r['cpu_s'], 1)} | {fmt(r['wall_s'], 1)} |"
         )
+    w("")
+    w("CPU s: fbmFoam's last ExecutionTime, serial.")
+    for r in ours:
+        level = None if math.isnan(r["level"]) else int(r["level"])
+        if level in COST_NOTES:
+            w(f"Level {level}: " + COST_NOTES[level].replace("\n", " ")
+              + " (its time is not that of a run from rest to t = 10).")
     w("")
     if volume_integral:
         vi = {r["level"]: r for r in volume_integral}
@@ -181,18 +202,26 @@ def write_table(path, reference, interval, ours, volume_integral, paper,
             f"| {fmt(r['cL'], 5)} | {fmt_err(r['cL_err'])} |"
         )
     w("")
-    w("## Body-fitted OpenFOAM, for scale (cylinder meshed, O-grid)")
+    w("## Body-fitted OpenFOAM (cylinder meshed, O-grid; `bodyFitted/`)")
     w("")
-    w("| solver | cells | err cD % | err dp % | time s |")
-    w("|---|---|---|---|---|")
+    w("Stock simpleFoam (steady, SIMPLEC) and pimpleFoam (the fbmFoam")
+    w("tutorial's numerics plus one non-orthogonal corrector, from rest to")
+    w("t = 10) on the same blockMesh O-grids; `validationData/bodyFitted.csv`,")
+    w("written by `bodyFitted/Allrun`. CPU s: the solver's last")
+    w("ExecutionTime, serial. Runs that did not reach the steady state are")
+    w("left out (see `bodyFitted/README.md`).")
+    w("")
+    w("| solver | level | cells | cD | err cD % | cL | err cL % | dp "
+      "| err dp % | CPU s | wall s |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in body_fitted:
         w(
-            f"| {r['source']} | {fmt(r['cells'], 0)} | {fmt_err(r['cD_err_pct'])} "
-            f"| {fmt_err(r['dp_err_pct'])} | {fmt(r['time_s'], 1)} |"
+            f"| {r['source']} | {fmt(r['level'], 0)} | {fmt(r['cells'], 0)} "
+            f"| {fmt(r['cD'], 4)} | {fmt_err(r['cD_err'])} "
+            f"| {fmt(r['cL'], 5)} | {fmt_err(r['cL_err'])} "
+            f"| {fmt(r['dp'], 5)} | {fmt_err(r['dp_err'])} "
+            f"| {fmt(r['cpu_s'], 1)} | {fmt(r['wall_s'], 1)} |"
         )
-    w("")
-    w("simpleFoam: reference.md, CPU time. pimpleFoam: this case's numerics,")
-    w("wall time (see validationData/bodyFitted.csv).")
     w("")
     with open(path, "w") as f:
         f.write("\n".join(out))
@@ -205,48 +234,66 @@ def positive(xs, ys):
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
+def time_key(rows):
+    """cpu_s where every row has it, else wall_s."""
+    return ("cpu_s" if rows and all(not math.isnan(r.get("cpu_s", math.nan))
+                                    for r in rows) else "wall_s")
+
+
 def write_plot(path, ours, volume_integral, paper, body_fitted):
-    style = {"cD": ("C0", "o"), "cL": ("C1", "s"), "dp": ("C2", "^")}
-    fig, axes = plt.subplots(1, 2, figsize=(13, 7))
-
-    for ax, xkey, xlabel in (
-        (axes[0], "cells", "cells"),
-        (axes[1], "wall_s", "wall time [s] (simpleFoam: CPU)"),
-    ):
-        for q in QUANTITIES:
-            x, y = positive([r[xkey] for r in ours], [r[q + "_err"] for r in ours])
-            colour, marker = style[q]
-            ax.loglog(x, y, marker=marker, color=colour,
-                      label=f"fbmFoam {q} (momentum exchange)" if q == "cD"
-                      else f"fbmFoam {q}")
-        x, y = positive([r[xkey] for r in volume_integral],
-                        [r["cD_err"] for r in volume_integral])
-        if x:
-            ax.loglog(x, y, "o--", color="C0",
-                      label="fbmFoam cD (volume integral, Eq. 14)")
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel("|error| [%]")
-        ax.grid(True, which="both", alpha=0.3)
-
-    x, y = positive([r["cells"] for r in paper], [r["cD_err"] for r in paper])
-    axes[0].loglog(x, y, "o-.", color="C3", mfc="none", label="paper FEM-FBM cD")
-    x, y = positive([r["cells"] for r in paper], [r["cL_err"] for r in paper])
-    axes[0].loglog(x, y, "s-.", color="C4", mfc="none", label="paper FEM-FBM cL")
-    for source, ls in (("simpleFoam", "o:"), ("pimpleFoam", "D:")):
+    """One row per quantity (cD, cL, dp): |error| against cells (left)
+    and against CPU time (right), all methods on the same axes."""
+    fig, axes = plt.subplots(3, 2, figsize=(13, 15))
+    ours_time = time_key(ours)
+    series = [
+        # label, rows, x keys (cells, time), line style, colour, fill
+        ("fbmFoam (momentum exchange)", ours, ours_time, "o-", "C0", True),
+        ("fbmFoam (volume integral, Eq. 14)", volume_integral,
+         time_key(volume_integral), "o--", "C0", False),
+    ]
+    for source, ls, colour in (("simpleFoam", "s:", "k"),
+                               ("pimpleFoam", "D-.", "C2")):
         rows = [r for r in body_fitted if r["source"] == source]
-        x, y = positive([r["cells"] for r in rows], [r["cD_err_pct"] for r in rows])
-        axes[0].loglog(x, y, ls, color="k", mfc="none",
-                       label=f"body-fitted {source} cD")
-        x, y = positive([r["time_s"] for r in rows], [r["cD_err_pct"] for r in rows])
-        axes[1].loglog(x, y, ls, color="k", mfc="none",
-                       label=f"body-fitted {source} cD")
-    axes[0].set_title("DFG 2D-1: error against mesh size")
-    axes[1].set_title("DFG 2D-1: error against cost")
-    for ax in axes:
-        ax.legend(fontsize="small", loc="upper center",
-                  bbox_to_anchor=(0.5, -0.14), ncol=2)
+        series.append((f"body-fitted {source}", rows, "cpu_s", ls, colour, True))
+
+    for row, q in enumerate(QUANTITIES):
+        for col, xkey in enumerate(("cells", None)):
+            ax = axes[row, col]
+            for label, rows, tkey, ls, colour, fill in series:
+                if q == "dp" and "volume integral" in label:
+                    continue  # same flow: same dp as momentum exchange
+                x, y = positive([r[xkey or tkey] for r in rows],
+                                [r[q + "_err"] for r in rows])
+                if x:
+                    ax.loglog(x, y, ls, color=colour,
+                              mfc=colour if fill else "none", label=label)
+            if xkey == "cells" and q in ("cD", "cL"):
+                x, y = positive([r["cells"] for r in paper],
+                                [r[q + "_err"] for r in paper])
+                ax.loglog(x, y, "v-.", color="C3", mfc="none",
+                          label="paper FEM-FBM (elements)")
+            if xkey is None:
+                for r in ours:
+                    note = COST_NOTES.get(int(r["level"]) if not
+                                          math.isnan(r["level"]) else None)
+                    if note and not math.isnan(r[q + "_err"]) and r[q + "_err"]:
+                        ax.annotate(note, (r[ours_time], abs(r[q + "_err"])),
+                                    textcoords="offset points", xytext=(-8, 8),
+                                    ha="right", fontsize="x-small", color="C0")
+            lo, hi = ax.get_ylim()
+            if hi < 100 * lo:  # less than two decades: label the minor ticks
+                ax.yaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
+            ax.set_xlabel("cells" if xkey else "CPU time [s]")
+            ax.set_ylabel(f"|error {q}| [%]")
+            ax.set_title(f"DFG 2D-1 {q}: error against "
+                         f"{'mesh size' if xkey else 'cost'}")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize="small")
+    if ours_time != "cpu_s":
+        for ax in axes[:, 1]:
+            ax.set_xlabel("time [s] (fbmFoam: wall, body-fitted: CPU)")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=100)
 
 
 def check(ours):
