@@ -1,0 +1,69 @@
+"""Stability map in (density ratio, time step): map.csv and the dt = 1e-3
+runs of sweep.csv -> mapTable.md, map.png."""
+import csv
+import os
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt
+
+here = os.path.dirname(os.path.abspath(__file__))
+rows = list(csv.DictReader(open(os.path.join(here, 'map.csv'))))
+have = {(r['rho_s'], r['Ca'], float(r['dt'])) for r in rows}
+for r in csv.DictReader(open(os.path.join(here, 'sweep.csv'))):
+    if (r['rho_s'], r['Ca'], 1e-3) not in have and float(r['Ca']) in (0, 1):
+        r = dict(r)
+        r['dt'] = '1e-3'
+        rows.append(r)
+
+Cas = sorted({float(r['Ca']) for r in rows})
+dts = sorted({float(r['dt']) for r in rows})
+rhos = sorted({float(r['rho_s']) for r in rows}, reverse=True)
+cell = {(float(r['rho_s']), float(r['Ca']), float(r['dt'])): r for r in rows}
+
+with open(os.path.join(here, 'mapTable.md'), 'w') as f:
+    f.write('Settling particle, nu = 0.1, level 3 (R/h = 3), fixed dt, to '
+            't = 0.3: s = stable, o = oscillating, d = diverged (at t)\n\n')
+    for c in Cas:
+        f.write('C_a = %g\n\n| rho_s/rho_f | ' % c
+                + ' | '.join('dt = %g' % d for d in dts)
+                + ' |\n|---|' + '---|'*len(dts) + '\n')
+        for rho in rhos:
+            out = []
+            for d in dts:
+                r = cell.get((rho, c, d))
+                if r is None:
+                    out.append('-')
+                elif r['status'] == 'diverged':
+                    out.append('d (%s)' % r['t_end'])
+                else:
+                    out.append(r['status'][0])
+            f.write('| %g | %s |\n' % (rho, ' | '.join(out)))
+        f.write('\n')
+
+colour = {'stable': 'tab:green', 'oscillating': 'tab:orange',
+          'diverged': 'tab:red'}
+fig, axes = plt.subplots(1, len(Cas), figsize=(5*len(Cas), 3.6), sharey=True)
+if len(Cas) == 1:
+    axes = [axes]
+for ax, c in zip(axes, Cas):
+    for r in rows:
+        if float(r['Ca']) != c:
+            continue
+        s = r['status']
+        ax.scatter(float(r['rho_s']) - 1, float(r['dt']), s=110,
+                   c=colour[s], marker='x' if s == 'diverged' else 'o')
+    for s, col in colour.items():
+        ax.scatter([], [], c=col, label=s,
+                   marker='x' if s == 'diverged' else 'o')
+    ax.set_xscale('log')
+    ax.set_yscale('log')
+    ax.set_xlabel('rho_s/rho_f - 1')
+    ax.set_title('addedMassCoeff C_a = %g' % c)
+    ax.grid(True, which='both', alpha=0.3)
+axes[0].set_ylabel('time step dt')
+axes[-1].legend(loc='lower right', fontsize=8)
+fig.suptitle('Explicit coupling, settling disk (R/h = 3): where it fails')
+fig.tight_layout()
+fig.savefig(os.path.join(here, 'map.png'), dpi=120)
+print('wrote mapTable.md, map.png')
