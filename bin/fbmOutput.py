@@ -11,7 +11,7 @@ columns Time Fx Fy Fz Tx Ty Tz x y z Ux Uy Uz wx wy wz, or summary.dat
 with Time N maxSpeed kineticEnergy Xx Xy Xz minPairGap minWallGap), named
 by the '#' header line that starts with '# Time'. A restart opens a new
 <startTime> folder: the folders are joined in time order and the rows of an
-earlier folder at or after a later folder's start time are dropped (the
+earlier folder after a later folder's start time are dropped (the
 restarted run wrote them again).
 
 Cloud: <time>/lagrangian/fbmBodies/{positions,d,U,id,...} in the case
@@ -51,8 +51,11 @@ def history(case, name):
     rows = []
     for f in files:
         start = _startTime(f)
-        # the restarted run rewrites everything from its start time on
-        rows = [r for r in rows if r[0] < start - 1e-12]
+        # the restarted run rewrites everything after its start time (the
+        # folder name has timePrecision digits: a tolerance far below a
+        # time step)
+        tol = 1e-6*max(1.0, abs(start))
+        rows = [r for r in rows if r[0] <= start + tol]
         with open(f) as fh:
             for line in fh:
                 if line.startswith('#'):
@@ -226,11 +229,15 @@ def readCloudFile(path, kind):
         a = np.frombuffer(data, dtype=dt, count=n*ncomp, offset=pos)
         return a.astype(dtype).reshape(shape)
     if fmt == 'binary':
-        # particle::writePosition: position (3 doubles) and cell, then nl
-        rec = 24 + labelBytes + 1
+        # IOPosition: a newline, then per particle particle::writePosition's
+        # block '(' position (3 doubles) cell ')' and a newline
+        pos = re.compile(rb'\s*').match(data, pos).end()
+        rec = 1 + 24 + labelBytes + 1 + 1
         raw = np.frombuffer(data, dtype=np.uint8, count=n*rec, offset=pos)
-        raw = raw.reshape(n, rec)[:, :24].copy()
-        return raw.view('<f8').reshape(n, 3)
+        raw = raw.reshape(n, rec)
+        if (raw[:, 0] != ord('(')).any() or (raw[:, -2] != ord(')')).any():
+            raise ValueError('%s: binary positions not understood' % path)
+        return raw[:, 1:25].copy().view('<f8').reshape(n, 3)
     # ASCII: numbers, brackets dropped
     end = data.rindex(b')')
     words = data[pos:end].replace(b'(', b' ').replace(b')', b' ').split()
