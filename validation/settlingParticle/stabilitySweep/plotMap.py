@@ -62,7 +62,7 @@ for ax, c in zip(axes, Cas):
     ax.set_title('addedMassCoeff C_a = %g' % c)
     ax.grid(True, which='both', alpha=0.3)
 axes[0].set_ylabel('time step dt')
-axes[-1].legend(loc='lower right', fontsize=8)
+axes[-1].legend(loc='center left', bbox_to_anchor=(1.02, 0.5), fontsize=8)
 fig.suptitle('Explicit coupling, settling disk (R/h = 3): where it fails')
 fig.tight_layout()
 fig.savefig(os.path.join(here, 'map.png'), dpi=120)
