@@ -34,9 +34,9 @@ Description
     10 % of the oscillation energy), or not separated (headOn).
 
     The sub-step is dt_s = t_c/n, t_c the contact time of
-    fbm::particleCollisions (the stiffest branch, pair or wall). For n >= 2
+    fbm::particleCollisions (the stiffest branch, pair or wall). For n >= 3
     the run calls particleCollisions::move with dt = dt_s (one sub-step per
-    call, sampled at every sub-step). n < 2 is below the lower limit of
+    call, sampled at every sub-step). n < 3 is below the lower limit of
     nStepsPerContact: these runs, and the fixed physical sub-step runs
     (the sub-step of the DKT law, eps'_P = 1e-4, n = 20, at every
     stiffness), make the same calls as move() (beginSubCycles, the contact
@@ -267,7 +267,7 @@ result headOn
     (
         1, new fbm::body("b1", bodyDict(point(1 + D0/2, 1, z), vector(-u, 0, 0)), mesh)
     );
-    const scalar nDict = max(n, scalar(2));
+    const scalar nDict = max(n, scalar(3));
     fbm::particleCollisions coll(collisionsDict(epsPO, nDict), mesh, bodies);
     bool useMove = true;
     setStep(coll, nDict, n, fixedDt, r, useMove);
@@ -393,7 +393,7 @@ result rest
     (
         0, new fbm::body("b0", bodyDict(point(1, R, z), Zero), mesh)
     );
-    const scalar nDict = max(n, scalar(2));
+    const scalar nDict = max(n, scalar(3));
     fbm::particleCollisions coll(collisionsDict(epsPO, nDict), mesh, bodies);
     bool useMove = true;
     setStep(coll, nDict, n, fixedDt, r, useMove);
@@ -536,8 +536,8 @@ int main(int argc, char *argv[])
                 bodyDict(point(1 + D0/2, 1, z), vector(-10, 0, 0)), mesh));
         }
         messageStream::level = 0;
-        fbm::particleCollisions ca(collisionsDict(1e-5, 2), mesh, a);
-        fbm::particleCollisions cb(collisionsDict(1e-5, 2), mesh, b);
+        fbm::particleCollisions ca(collisionsDict(1e-5, 3), mesh, a);
+        fbm::particleCollisions cb(collisionsDict(1e-5, 3), mesh, b);
         scalar maxDiff = 0;
         for (label i = 0; i < 3000; ++i)
         {

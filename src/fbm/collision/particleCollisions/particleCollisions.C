@@ -62,13 +62,11 @@ Foam::fbm::particleCollisions::particleCollisions
     h_(meshSize(mesh)),
     depth_(forceScale(mesh)),
     model_(contactModel::New(dict, h_)),
-    walls_(mesh),
-    search_(),
     nStepsPerContact_
     (
         dict.getCheckOrDefault<scalar>
         (
-            "nStepsPerContact", 20, [](scalar n){ return n >= 2; }
+            "nStepsPerContact", 20, [](scalar n){ return n >= 3; }
         )
     ),
     maxSubCycles_
@@ -85,6 +83,8 @@ Foam::fbm::particleCollisions::particleCollisions
             "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
+    walls_(mesh),
+    search_(),
     mass_(bodies.size(), GREAT),
     dtSubMax_(GREAT),
     X_(bodies.size()),
