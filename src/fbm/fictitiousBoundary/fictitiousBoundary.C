@@ -802,25 +802,24 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
 
     // The diagonal a_P of a cell as in a serial run: faces on coupled
     // patches (processor, cyclic) keep their coefficients in
-    // internalCoeffs, not in diag
-    auto cellDiag = [&](const label celli)
+    // internalCoeffs, not in diag; added once per call, patch by patch
+    scalarField diagCoupled;
+    if (coupled_)
     {
-        scalar aP = diag[celli];
-        if (coupled_)
+        diagCoupled = diag;
+        forAll(patches, patchi)
         {
-            for (const label facei : cellFaces[celli])
+            if (!patches[patchi].coupled()) continue;
+
+            const labelUList& faceCells = patches[patchi].faceCells();
+            const Field<vector>& ic = UEqn.internalCoeffs()[patchi];
+            forAll(faceCells, i)
             {
-                if (facei < nInternal) continue;
-                const label patchi = patches.whichPatch(facei);
-                if (patches[patchi].coupled())
-                {
-                    aP += UEqn.internalCoeffs()[patchi]
-                        [facei - patches[patchi].start()].component(0);
-                }
+                diagCoupled[faceCells[i]] += ic[i].component(0);
             }
         }
-        return aP;
-    };
+    }
+    const scalarField& aPs = coupled_ ? diagCoupled : diag;
 
     if (forcing_ == forcingType::volumeFraction)
     {
@@ -829,7 +828,7 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
             const scalar a = alpha[celli];
             const scalar k =
                 (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
-            lambda_[celli] = k*cellDiag(celli);
+            lambda_[celli] = k*aPs[celli];
         }
     }
     else
@@ -843,7 +842,7 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         for (const label celli : activeCells_)
         {
             const scalar d = distance_[celli];
-            const scalar aP = cellDiag(celli);
+            const scalar aP = aPs[celli];
             scalar k = penaltyMax_;
 
             if (d > 0)

@@ -69,21 +69,27 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
     // Zero field of mesh size, returned zero
     scalarField& alphaB = fb.scratch();
 
-    // Coupled (processor, cyclic) faces: the other side's solid fraction
-    // and body index from the evaluated patch fields of alpha.solid and
-    // bodyID, the interpolation weight, and for each body the cells on this
-    // side next to that body's cells on the other side. Elsewhere on the
-    // boundary alpha has zero gradient (weight 1, no neighbour).
-    const label nBFaces = mesh.nFaces() - nInternal;
+    // Coupled (processor, cyclic) faces, only where the mesh has them: the
+    // other side's solid fraction and body index from the evaluated patch
+    // fields of alpha.solid and bodyID, the interpolation weight, and the
+    // cells on this side next to each body's cells on the other side.
+    // Elsewhere on the boundary alpha has zero gradient.
+    bool coupled = false;
+    for (const fvPatch& pp : mesh.boundary())
+    {
+        if (pp.coupled()) coupled = true;
+    }
+
+    const label nBFaces = coupled ? mesh.nFaces() - nInternal : 0;
     scalarField nbrAlpha(nBFaces, Zero);
     labelList nbrBody(nBFaces, -1);
     scalarField wB(nBFaces, scalar(1));
-    bitSet onCoupled(mesh.nCells());
-    labelListList nbrCells(bodies.size());
+    bitSet onCoupled(coupled ? mesh.nCells() : 0);
+    HashTable<DynamicList<label>, label, Hash<label>> nbrCells;
+    if (coupled)
     {
         const volScalarField& alpha = fb.alpha();
         const volScalarField& id = fb.bodyID();
-        List<DynamicList<label>> cellsOf(bodies.size());
         forAll(mesh.boundary(), patchi)
         {
             const fvPatch& pp = mesh.boundary()[patchi];
@@ -108,16 +114,11 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
                 {
                     nbrAlpha[bFacei] = a[i];
                     nbrBody[bFacei] = label(n[i]);
-                    cellsOf[nbrBody[bFacei]].append(faceCells[i]);
+                    nbrCells(nbrBody[bFacei]).append(faceCells[i]);
                 }
             }
         }
-        forAll(cellsOf, bi)
-        {
-            nbrCells[bi].transfer(cellsOf[bi]);
-        }
     }
-    const bool coupled = onCoupled.any();
 
     forAll(bodies, bi)
     {
@@ -139,7 +140,11 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
             {
                 if (onCoupled.test(celli)) all.insert(celli);
             }
-            all.insert(nbrCells[bi]);
+            const auto iter = nbrCells.cfind(bi);
+            if (iter.found())
+            {
+                all.insert(iter.val());
+            }
             extended = all.sortedToc();
         }
         const labelList& band = coupled ? extended : b.bandCells(mesh);
@@ -160,8 +165,10 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
                       + (1 - w[facei])*alphaB[nei[facei]];
                     gradAlphaV += (own[facei] == celli ? af : -af)*Sf[facei];
                 }
-                else
+                else if (coupled)
                 {
+                    // Coupled faces interpolate with the other side; the
+                    // rest (weight 1, no neighbour) have zero gradient
                     const label bFacei = facei - nInternal;
                     const scalar af =
                         wB[bFacei]*alphaB[celli]
@@ -171,6 +178,11 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
                           : 0
                         );
                     gradAlphaV += af*Sf[facei];
+                }
+                else
+                {
+                    // Boundary faces: zero gradient
+                    gradAlphaV += alphaB[celli]*Sf[facei];
                 }
             }
 
