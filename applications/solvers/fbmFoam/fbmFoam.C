@@ -90,7 +90,8 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        // --- Move the bodies with the forces of the last step
+        // --- Explicit coupling: move the bodies with the forces of the
+        //     last step
         if (!fbm.moveBodies())
         {
             runTime.writeAndEnd();
@@ -114,8 +115,12 @@ int main(int argc, char *argv[])
             }
         }
 
-        // --- Hydrodynamic forces on the bodies
-        fbm.correctForces(U, p, turbulence->nuEff());
+        // --- Hydrodynamic forces on the bodies (rigidProjection: the
+        //     bodies move here and U takes their rigid motion)
+        if (!fbm.correctForces(U, p, turbulence->nuEff()))
+        {
+            runTime.writeAndEnd();
+        }
 
         runTime.write();
 

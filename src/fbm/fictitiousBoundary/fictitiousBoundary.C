@@ -45,6 +45,17 @@ Foam::fbm::fictitiousBoundary::forcingTypeNames
 });
 
 
+const Foam::Enum
+<
+    Foam::fbm::fictitiousBoundary::couplingType
+>
+Foam::fbm::fictitiousBoundary::couplingTypeNames
+({
+    { couplingType::explicitForce, "explicit" },
+    { couplingType::rigidProjection, "rigidProjection" },
+});
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::fbm::fictitiousBoundary::updateFields()
@@ -254,6 +265,13 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             "penaltyMax", 1e6, [](scalar k){ return k >= 10; }
         )
     ),
+    coupling_
+    (
+        couplingTypeNames.getOrDefault
+        (
+            "coupling", *this, couplingType::explicitForce
+        )
+    ),
     addedMassCoeff_
     (
         getCheckOrDefault<scalar>
@@ -274,6 +292,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     ),
     g_(Zero),
     bodies_(),
+    projected_(),
     cellBb_(mesh.nCells()),
     alpha_
     (
@@ -387,6 +406,38 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     readBodies();
     selectBodies();
 
+    projected_.setSize(bodies_.size(), false);
+    if (coupling_ == couplingType::rigidProjection)
+    {
+        forAll(bodies_, bi)
+        {
+            projected_[bi] =
+                bodies_[bi].translates() || bodies_[bi].rotates();
+        }
+
+        // The added mass is in the fluid solve: no virtual-mass term
+        if (addedMassCoeff_ != 0)
+        {
+            FatalIOErrorInFunction(*this)
+                << "addedMassCoeff " << addedMassCoeff_ << " with coupling"
+                << " rigidProjection in " << objectPath() << nl
+                << "    The rigid projection carries the added mass in the"
+                << " fluid solve; addedMassCoeff is for the explicit"
+                << " coupling only: remove it or set it to 0"
+                << exit(FatalIOError);
+        }
+
+        // The extra inertia of the bodies is an implicit Euler term
+        const word ddtU(mesh.ddtScheme("ddt(U)")[0].wordToken());
+        if (ddtU != "Euler")
+        {
+            FatalIOErrorInFunction(mesh.schemesDict())
+                << "coupling rigidProjection (" << objectPath() << ")"
+                << " needs ddtSchemes Euler for ddt(U), not " << ddtU
+                << exit(FatalIOError);
+        }
+    }
+
     // Restart: the state written at the start time overrides the initial
     // state of constant/fbmProperties
     IOobject stateIO
@@ -443,6 +494,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             if
             (
                 b.translates() && addedMassCoeff_ == 0
+             && coupling_ == couplingType::explicitForce
              && b.rho() < 1.2*rhoFluid_
             )
             {
@@ -468,6 +520,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
         << ", forcing " << forcingTypeNames[forcing_]
+        << ", coupling " << couplingTypeNames[coupling_]
         << ", nSubdivision " << nSubdivision_
         << ", penaltyMax " << penaltyMax_ << nl;
 
@@ -583,6 +636,18 @@ bool Foam::fbm::fictitiousBoundary::moveBodies()
 {
     times_.newStep();
 
+    // rigidProjection: the bodies move after the flow (correctForces)
+    if (coupling_ == couplingType::rigidProjection)
+    {
+        return true;
+    }
+
+    return advanceBodies();
+}
+
+
+bool Foam::fbm::fictitiousBoundary::advanceBodies()
+{
     bool moved = false;
     const scalar dt = mesh_.time().deltaTValue();
 
@@ -884,11 +949,155 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         }
     }
 
+    if (coupling_ == couplingType::rigidProjection)
+    {
+        // The cells of the projected bodies: no penalty, but the body's
+        // extra inertia (rho_s/rho_f - 1) alpha (du/dt - g) with implicit
+        // Euler, so the fluid solve treats them as a heavier fluid
+        const scalarField& id = bodyID_;
+        const scalarField& V = mesh_.V();
+        const vectorField& U0 = UEqn.psi().oldTime().primitiveField();
+        const scalar dt = mesh_.time().deltaTValue();
+
+        for (const label celli : activeCells_)
+        {
+            const label bi = label(id[celli]);
+            if (bi < 0 || !projected_[bi]) continue;
+
+            lambda_[celli] = 0;
+            const scalar c =
+                (bodies_[bi].rho()/rhoFluid_ - 1)*alpha[celli]*V[celli]/dt;
+            diag[celli] += c;
+            source[celli] += c*(U0[celli] + dt*g_);
+        }
+    }
+
     for (const label celli : activeCells_)
     {
         diag[celli] += lambda_[celli];
         source[celli] += lambda_[celli]*Us[celli];
     }
+}
+
+
+void Foam::fbm::fictitiousBoundary::projectionForces
+(
+    const volVectorField& U,
+    List<vector>& force,
+    List<vector>& torque
+) const
+{
+    // Over the cells of each projected body (fractions a):
+    // - the momentum the body's share gained over the step,
+    //   dP = sum a V (u - u^0), and its moment dL;
+    // - for the rigid blend at the end of the step, which also moves the
+    //   fluid share (1 - a) of partly covered cells towards the body's
+    //   motion (an impulse the body gives): with w = (1 - a) a V,
+    //   K = sum w, Ku = sum w u, and for the rotation KJ = sum w (|r|^2 I
+    //   - r r), Lu = sum w r x u
+    const vectorField& u = U.primitiveField();
+    const vectorField& u0 = U.oldTime().primitiveField();
+    const vectorField& C = mesh_.C().primitiveField();
+    const scalarField& V = mesh_.V();
+
+    const label nb = bodies_.size();
+    List<vector> dP(nb, Zero), dL(nb, Zero), Ku(nb, Zero), Lu(nb, Zero);
+    scalarList K(nb, Zero);
+    List<symmTensor> KJ(nb, Zero);
+    forAll(bodies_, bi)
+    {
+        if (!projected_[bi]) continue;
+
+        const body& b = bodies_[bi];
+        const labelList& cells = b.cells();
+        const scalarList& a = b.alpha();
+        forAll(cells, i)
+        {
+            const label celli = cells[i];
+            const vector r(C[celli] - b.centre());
+            const vector du(a[i]*V[celli]*(u[celli] - u0[celli]));
+            dP[bi] += du;
+            dL[bi] += r ^ du;
+
+            const scalar w = (1 - a[i])*a[i]*V[celli];
+            K[bi] += w;
+            Ku[bi] += w*u[celli];
+            KJ[bi] += w*(magSqr(r)*symmTensor::I - sqr(r));
+            Lu[bi] += w*(r ^ u[celli]);
+        }
+    }
+    for (List<vector>* l : {&dP, &dL, &Ku, &Lu})
+    {
+        Pstream::listCombineGather(*l, plusEqOp<vector>());
+        Pstream::listCombineScatter(*l);
+    }
+    Pstream::listCombineGather(K, plusEqOp<scalar>());
+    Pstream::listCombineScatter(K);
+    Pstream::listCombineGather(KJ, plusEqOp<symmTensor>());
+    Pstream::listCombineScatter(KJ);
+
+    // The body's new velocity conserves the momentum of the body and of
+    // the fluid share the blend moves:
+    //     M U + rho_f (K U - Ku) = M U^0 + rho_s dP,
+    // and likewise, per principal axis, its angular velocity. The force
+    // is the body's rate of change of momentum less its submerged weight,
+    // which fbm::body adds back.
+    const scalar dt = mesh_.time().deltaTValue();
+    forAll(bodies_, bi)
+    {
+        if (!projected_[bi]) continue;
+
+        const body& b = bodies_[bi];
+        const scalar Vb = b.shape().volume();
+        const scalar M = b.rho()*Vb;
+
+        const vector Unew
+        (
+            (M*b.U() + b.rho()*dP[bi] + rhoFluid_*Ku[bi])
+           /(M + rhoFluid_*K[bi])
+        );
+        force[bi] = M*(Unew - b.U())/dt - (M - rhoFluid_*Vb)*g_;
+
+        const symmTensor I(b.inertia());
+        const vector Lnew(b.rho()*dL[bi] + rhoFluid_*Lu[bi]);
+        vector wNew(b.omega());
+        const direction diagCmpt[3] =
+            { symmTensor::XX, symmTensor::YY, symmTensor::ZZ };
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            const scalar Idd = I.component(diagCmpt[d]);
+            if (Idd <= 0) continue;
+            const scalar Kdd = rhoFluid_*KJ[bi].component(diagCmpt[d]);
+            wNew[d] = (Idd*b.omega()[d] + Lnew[d])/(Idd + Kdd);
+        }
+        torque[bi] = (I & (wNew - b.omega()))/dt;
+    }
+}
+
+
+void Foam::fbm::fictitiousBoundary::rigidify
+(
+    volVectorField& U,
+    const labelList& cells,
+    const scalarList& alpha,
+    const labelList& id,
+    const List<point>& centres
+) const
+{
+    vectorField& u = U.primitiveFieldRef();
+    const vectorField& C = mesh_.C().primitiveField();
+
+    forAll(cells, i)
+    {
+        const label bi = id[i];
+        if (bi < 0 || !projected_[bi]) continue;
+
+        const body& b = bodies_[bi];
+        const label celli = cells[i];
+        const vector Ub(b.U() + (b.omega() ^ (C[celli] - centres[bi])));
+        u[celli] = (1 - alpha[i])*u[celli] + alpha[i]*Ub;
+    }
+    U.correctBoundaryConditions();
 }
 
 
@@ -940,27 +1149,62 @@ void Foam::fbm::fictitiousBoundary::writeLine
 }
 
 
-void Foam::fbm::fictitiousBoundary::correctForces
+bool Foam::fbm::fictitiousBoundary::correctForces
 (
-    const volVectorField& U,
+    volVectorField& U,
     const volScalarField& p,
     const volScalarField& nuEff
 )
 {
     if (bodies_.empty())
     {
-        return;
+        return true;
     }
+
+    const bool project = (coupling_ == couplingType::rigidProjection);
 
     List<vector> force, torque;
     {
         phaseTimes::scope forcesTime(times_, phaseTimes::forces);
         calcForces(forceModel_(), U, p, nuEff, force, torque);
+        if (project)
+        {
+            projectionForces(U, force, torque);
+        }
     }
 
     forAll(bodies_, bi)
     {
         bodies_[bi].setForce(force[bi], torque[bi]);
+    }
+
+    // rigidProjection: the bodies move over the step with these forces
+    // (and the contacts), and the flow in them takes their rigid motion
+    bool inside = true;
+    if (project)
+    {
+        // The footprint the flow was solved with: the flow there takes
+        // the bodies' new velocities (the cells a body moves into keep
+        // their fluid velocity; the next step accelerates them and
+        // charges the body)
+        const labelList cells(activeCells_);
+        scalarList alpha(cells.size());
+        labelList id(cells.size());
+        forAll(cells, i)
+        {
+            alpha[i] = alpha_[cells[i]];
+            id[i] = label(bodyID_[cells[i]]);
+        }
+        List<point> centres(bodies_.size());
+        forAll(bodies_, bi)
+        {
+            centres[bi] = bodies_[bi].centre();
+        }
+
+        inside = advanceBodies();
+
+        phaseTimes::scope forcingTime(times_, phaseTimes::forcing);
+        rigidify(U, cells, alpha, id, centres);
     }
 
     {
@@ -1022,6 +1266,8 @@ void Foam::fbm::fictitiousBoundary::correctForces
     {
         times_.report(Info);
     }
+
+    return inside;
 }
 
 
