@@ -1,7 +1,10 @@
 """Classify one settling run of the stability sweep.
 
 Prints the csv row rho_s,Ca,status,t_end,v_end,osc,wall_s:
-- diverged: the run stopped (runaway body) before t = 0.3;
+- diverged: the run stopped (runaway body) before t = 0.3; a run that
+  ended because the disk reached the bottom wall (fbmFoam's "reaches the
+  domain boundary", no contact model here) is classified by its
+  oscillation like a complete one;
 - oscillating: osc >= 0.02, where osc is the rms of the step-to-step
   deviation v_i - (v_(i-1) + v_(i+1))/2 of the vertical velocity over its
   rms, for the last 50 steps: the lagged added mass gives a persistent
@@ -20,7 +23,9 @@ for line in open(run + '/postProcessing/fbmBodies/0/particle.dat'):
         rows.append([float(x) for x in line.split()])
 t = [r[0] for r in rows]
 v = [r[11] for r in rows]      # Time Fx Fy Fz Tx Ty Tz x y z Ux Uy Uz ...
-if int(rc) != 0 or t[-1] < 0.3 - 1e-9:
+landed = int(rc) == 0 and any(
+    'reaches the domain boundary' in line for line in open(run + '/log.fbmFoam'))
+if int(rc) != 0 or (t[-1] < 0.3 - 1e-9 and not landed):
     status, osc = 'diverged', float('nan')
 else:
     w = v[-50:]

@@ -11,21 +11,35 @@ here = os.path.dirname(os.path.abspath(__file__))
 rows = list(csv.DictReader(open(os.path.join(here, 'map.csv'))))
 have = {(r['rho_s'], r['Ca'], float(r['dt'])) for r in rows}
 for r in csv.DictReader(open(os.path.join(here, 'sweep.csv'))):
-    if (r['rho_s'], r['Ca'], 1e-3) not in have and float(r['Ca']) in (0, 1):
+    if (r['rho_s'], r['Ca'], 1e-3) not in have and r['Ca'] in ('0', '1'):
         r = dict(r)
         r['dt'] = '1e-3'
         rows.append(r)
 
-Cas = sorted({float(r['Ca']) for r in rows})
+
+def key(c):
+    """Coupling label: C_a as a number, or 'P' (rigidProjection) last."""
+    return (1, 0) if c == 'P' else (0, float(c))
+
+
+def title(c):
+    if c == 'P':
+        return 'coupling rigidProjection'
+    return 'explicit, addedMassCoeff C_a = %g' % float(c)
+
+
+for r in rows:
+    r['Ca'] = 'P' if r['Ca'] == 'P' else '%g' % float(r['Ca'])
+Cas = sorted({r['Ca'] for r in rows}, key=key)
 dts = sorted({float(r['dt']) for r in rows})
 rhos = sorted({float(r['rho_s']) for r in rows}, reverse=True)
-cell = {(float(r['rho_s']), float(r['Ca']), float(r['dt'])): r for r in rows}
+cell = {(float(r['rho_s']), r['Ca'], float(r['dt'])): r for r in rows}
 
 with open(os.path.join(here, 'mapTable.md'), 'w') as f:
     f.write('Settling particle, nu = 0.1, level 3 (R/h = 3), fixed dt, to '
             't = 0.3: s = stable, o = oscillating, d = diverged (at t)\n\n')
     for c in Cas:
-        f.write('C_a = %g\n\n| rho_s/rho_f | ' % c
+        f.write('%s\n\n| rho_s/rho_f | ' % title(c)
                 + ' | '.join('dt = %g' % d for d in dts)
                 + ' |\n|---|' + '---|'*len(dts) + '\n')
         for rho in rhos:
@@ -48,7 +62,7 @@ if len(Cas) == 1:
     axes = [axes]
 for ax, c in zip(axes, Cas):
     for r in rows:
-        if float(r['Ca']) != c:
+        if r['Ca'] != c:
             continue
         s = r['status']
         ax.scatter(float(r['rho_s']) - 1, float(r['dt']), s=110,
@@ -59,11 +73,11 @@ for ax, c in zip(axes, Cas):
     ax.set_xscale('log')
     ax.set_yscale('log')
     ax.set_xlabel('rho_s/rho_f - 1')
-    ax.set_title('addedMassCoeff C_a = %g' % c)
+    ax.set_title(title(c), fontsize=10)
     ax.grid(True, which='both', alpha=0.3)
 axes[0].set_ylabel('time step dt')
 axes[-1].legend(loc='center left', bbox_to_anchor=(1.02, 0.5), fontsize=8)
-fig.suptitle('Explicit coupling, settling disk (R/h = 3): where it fails')
+fig.suptitle('Settling disk (R/h = 3): where the couplings fail')
 fig.tight_layout()
 fig.savefig(os.path.join(here, 'map.png'), dpi=120)
 print('wrote mapTable.md, map.png')
