@@ -1166,7 +1166,18 @@ bool Foam::fbm::fictitiousBoundary::correctForces
     List<vector> force, torque;
     {
         phaseTimes::scope forcesTime(times_, phaseTimes::forces);
-        calcForces(forceModel_(), U, p, nuEff, force, torque);
+        if (project && !projected_.found(false))
+        {
+            // Every body is projected: the force model's values would all
+            // be replaced below (it costs a pass over the covered cells
+            // and a reduction of 2N vectors a step)
+            force.setSize(bodies_.size(), Zero);
+            torque.setSize(bodies_.size(), Zero);
+        }
+        else
+        {
+            calcForces(forceModel_(), U, p, nuEff, force, torque);
+        }
         if (project)
         {
             projectionForces(U, force, torque);
