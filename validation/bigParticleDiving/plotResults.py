@@ -75,6 +75,7 @@ def collect(run):
     params = os.path.join(run, 'system', 'caseParameters')
     row['rho'] = float(fbmOutput.dictEntry(params, 'rhoBig'))
     row['level'] = int(fbmOutput.dictEntry(params, 'level'))
+    row['bed'] = 'random' if run.rstrip('/').endswith('-random') else 'crystal'
     try:
         row['status'] = open(os.path.join(run, 'exitStatus')).read().strip()
     except OSError:
@@ -141,11 +142,12 @@ def main():
         rows.append(row)
         curves.append(curve)
     order = sorted(range(len(rows)),
-                   key=lambda k: (rows[k]['level'], rows[k]['rho']))
+                   key=lambda k: (rows[k]['bed'], rows[k]['level'],
+                                  rows[k]['rho']))
     rows = [rows[k] for k in order]
     curves = [curves[k] for k in order]
 
-    cols = ['rho', 'level', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
+    cols = ['rho', 'level', 'bed', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
             'y_final', 'Uy_final', 'reached_bottom', 'bed_top',
             'pair_overlap_r', 't_pair', 'wall_overlap_r', 't_wall',
             'n_bodies', 'cpu_s', 'status']
@@ -170,18 +172,20 @@ def plot(rows, curves):
     fig, ax = plt.subplots(figsize=(8, 6))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     rhos = sorted(set(r['rho'] for r in rows))
-    levels = sorted(set(r['level'] for r in rows))
+    levels = sorted(set((r['bed'], r['level']) for r in rows))
     styles = ['-', '--', ':', '-.']
     for r, c in zip(rows, curves):
         if c is None:
             continue
-        ax.plot(c[0], c[1], styles[levels.index(r['level']) % 4],
+        ax.plot(c[0], c[1], styles[levels.index((r['bed'], r['level'])) % 4],
                 color=colours[rhos.index(r['rho']) % len(colours)],
-                label='rho_s = %g, level %d (%s cells), to t = %g'
-                % (r['rho'], r['level'], format(r['cells'], ','),
+                label='rho_s = %g, level %d (%s cells), %s bed, to t = %g'
+                % (r['rho'], r['level'], format(r['cells'], ','), r['bed'],
                    r['t_end']))
-    # the lines of the first run with a bed (the same bed at every density)
+    # the lines of the first crystal run (the random bed's top is 0.04 lower)
     ref = next(r for r, c in zip(rows, curves) if c is not None)
+    ref = next((r for r, c in zip(rows, curves)
+                if c is not None and r['bed'] == 'crystal'), ref)
     R = ref['R']
     ax.axhline(ref['bed_top'], color='0.4', lw=1)
     ax.axhline(ref['bed_top'] + R, color='0.4', lw=0.8, ls='--')

@@ -43,7 +43,7 @@ Description
     written holds the settled centres.
 
 Usage
-    fbmSetParticles [-case DIR]
+    fbmSetParticles [-case DIR] [-dict FILE]
 
     system/setParticlesDict:
     \verbatim
@@ -407,6 +407,13 @@ int main(int argc, char *argv[])
         " of constant/fbmProperties"
     );
     argList::noParallel();
+    argList::addOption
+    (
+        "dict",
+        "file",
+        "Use the given dictionary (relative to the case) in place of"
+        " system/setParticlesDict"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -422,18 +429,34 @@ int main(int argc, char *argv[])
         )
     );
 
-    const IOdictionary dict
+    // system/setParticlesDict, or the file of -dict (relative to the case)
+    IOobject dictIO
     (
-        IOobject
-        (
-            "setParticlesDict",
-            runTime.system(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        "setParticlesDict",
+        runTime.system(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
     );
+    if (args.found("dict"))
+    {
+        fileName dictFile(args.get<fileName>("dict"));
+        if (!dictFile.isAbsolute())
+        {
+            dictFile = runTime.path()/dictFile;
+        }
+        dictIO = IOobject
+        (
+            dictFile, mesh, IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+    }
+    if (!dictIO.typeHeaderOk<IOdictionary>(false))
+    {
+        FatalErrorInFunction
+            << "Cannot read " << dictIO.objectPath() << exit(FatalError);
+    }
+    const IOdictionary dict(dictIO);
 
     DynamicList<point> Xd;
     DynamicList<scalar> Rd;
