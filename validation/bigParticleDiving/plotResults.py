@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Collect and plot the big-disk runs of ./Allrun (runs/rho<RHO>-L<level>/).
 
-For every run folder runs/rho<RHO>-L<level>/ (a copy of
-tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L) reads
+For every run folder runs/rho<RHO>-L<level>[-random]/ (a copy of
+tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L [-bed
+random]) reads
 
     system/caseParameters          rhoBig, level
     constant/fbmProperties         the radius R of the body 'big'
@@ -14,7 +15,7 @@ tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L) reads
 
 and writes
 
-    results.csv   one row per run: rho, level, cells, t_end (last time
+    results.csv   one row per run: rho, level, bed, cells, t_end (last time
                   reached), y_start, y_min and t_y_min (the deepest point:
                   lowest centre height of the big disk and when), y_final
                   and Uy_final (centre height and vertical velocity at
@@ -29,7 +30,9 @@ and writes
                   with the bed's top, the bottom and the centre heights of a
                   big disk resting on them
 
-Usage: plotResults.py [RUNS]   (default: runs/ beside this script)
+Usage: plotResults.py [RUNS] [SUFFIX]
+    RUNS: default runs/ beside this script; SUFFIX: write
+    results<SUFFIX>.csv and height<SUFFIX>.png (default none)
 
 status is the run's exit status, 'no bed' without constant/smallParticles,
 'bodies' when summary.dat has another number of bodies than 1 + the small
@@ -131,6 +134,7 @@ def fmt(v):
 
 def main():
     runs = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, 'runs')
+    suffix = sys.argv[2] if len(sys.argv) > 2 else ''
     found = [p for p in glob.glob(os.path.join(runs, 'rho*-L*'))
              if os.path.isdir(p)]
     if not found:
@@ -151,12 +155,13 @@ def main():
             'y_final', 'Uy_final', 'reached_bottom', 'bed_top',
             'pair_overlap_r', 't_pair', 'wall_overlap_r', 't_wall',
             'n_bodies', 'cpu_s', 'status']
-    with open(os.path.join(here, 'results.csv'), 'w') as f:
+    out = os.path.join(here, 'results%s.csv' % suffix)
+    with open(out, 'w') as f:
         w = csv.writer(f, lineterminator='\n')
         w.writerow(cols)
         for r in rows:
             w.writerow([fmt(r.get(c)) for c in cols])
-    print(open(os.path.join(here, 'results.csv')).read(), end='')
+    print(open(out).read(), end='')
 
     for r in rows:
         if r['status'] not in ('0', 'none'):
@@ -164,11 +169,11 @@ def main():
                   % (r['rho'], r['level'], r['status'], r['run']))
     if all(c is None for c in curves):
         return 1
-    plot(rows, curves)
+    plot(rows, curves, suffix)
     return 0
 
 
-def plot(rows, curves):
+def plot(rows, curves, suffix):
     fig, ax = plt.subplots(figsize=(8, 6))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     rhos = sorted(set(r['rho'] for r in rows))
@@ -209,7 +214,7 @@ def plot(rows, curves):
                  % (R, ref.get('n_bodies', 1) - 1))
     ax.legend(fontsize=8, loc='center right')
     fig.tight_layout()
-    fig.savefig(os.path.join(here, 'height.png'), dpi=120)
+    fig.savefig(os.path.join(here, 'height%s.png' % suffix), dpi=120)
 
 
 if __name__ == '__main__':
