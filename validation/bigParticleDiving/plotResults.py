@@ -212,7 +212,7 @@ def plot(rows, curves, suffix):
     ax.set_ylabel("big disk's centre height y [cm]")
     ax.set_title('Big disk (R = %g) diving into %d small ones (fbmFoam)'
                  % (R, ref.get('n_bodies', 1) - 1))
-    ax.legend(fontsize=8, loc='center right')
+    ax.legend(fontsize=8, loc='upper right')
     fig.tight_layout()
     fig.savefig(os.path.join(here, 'height%s.png' % suffix), dpi=120)
 
