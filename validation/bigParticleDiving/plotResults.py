@@ -174,7 +174,7 @@ def main():
 
 
 def plot(rows, curves, suffix):
-    fig, ax = plt.subplots(figsize=(8, 6))
+    fig, ax = plt.subplots(figsize=(8, 7.5))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     rhos = sorted(set(r['rho'] for r in rows))
     levels = sorted(set((r['bed'], r['level']) for r in rows))
@@ -212,7 +212,7 @@ def plot(rows, curves, suffix):
     ax.set_ylabel("big disk's centre height y [cm]")
     ax.set_title('Big disk (R = %g) diving into %d small ones (fbmFoam)'
                  % (R, ref.get('n_bodies', 1) - 1))
-    ax.legend(fontsize=8, loc='upper right')
+    ax.legend(fontsize=8, loc='upper center', bbox_to_anchor=(0.5, -0.1), ncol=2)
     fig.tight_layout()
     fig.savefig(os.path.join(here, 'height%s.png' % suffix), dpi=120)
 
