@@ -20,7 +20,7 @@ Description
 #include "HashSet.H"
 #include "ITstream.H"
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+// * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * * //
 
 void Foam::fbm::fictitiousBoundary::readParticleList
 (
@@ -113,6 +113,8 @@ void Foam::fbm::fictitiousBoundary::readParticleList
         << listName << "0 - " << listName << n - 1 << nl;
 }
 
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::fbm::fictitiousBoundary::readBodies()
 {

@@ -53,38 +53,32 @@ Usage
 #include "fvMesh.H"
 #include "IOdictionary.H"
 #include "OFstream.H"
-#include "ITstream.H"
 #include "uniformDimensionedFields.H"
 #include "body.H"
+#include "fictitiousBoundary.H"
 #include "particleCollisions.H"
 
 using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-//- A translating and rotating circle or sphere
-autoPtr<fbm::body> makeBody
+//- The body of dict, translating only and starting from rest (the contact
+//  forces are central: no torques)
+fbm::body* translatingBody
 (
     const word& name,
-    const word& shape,
-    const point& X,
-    const scalar r,
-    const scalar rho,
+    const dictionary& dict,
     const fvMesh& mesh,
     PtrList<dictionary>& dicts
 )
 {
-    dictionary* d = new dictionary;
-    d->add("type", shape);
-    d->add("radius", r);
-    d->add("rho", rho);
-    d->add("centre", X);
-    d->add("U", vector::zero);
-    d->add("omega", vector::zero);
-    d->add("translate", true);
-    d->add("rotate", false);
+    dictionary* d = new dictionary(dict);
+    d->set("U", vector::zero);
+    d->set("omega", vector::zero);
+    d->set("translate", true);
+    d->set("rotate", false);
     dicts.append(d);
-    return autoPtr<fbm::body>::New(name, *d, mesh);
+    return new fbm::body(name, *d, mesh);
 }
 
 
@@ -159,61 +153,33 @@ int main(int argc, char *argv[])
             )
         ).value()
     );
-    const word shape(mesh.nSolutionD() == 3 ? "sphere" : "circle");
-
     PtrList<dictionary> dicts;
-    DynamicList<fbm::body*> list;
+    PtrList<fbm::body> bodies;
 
-    // The big disk first
-    const dictionary& bigDict = fbmDict.subDict("bodies").subDict("big");
-    list.append
-    (
-        makeBody
-        (
-            "big", shape, bigDict.get<point>("centre"),
-            bigDict.get<scalar>("radius"), rhoBig, mesh, dicts
-        ).ptr()
-    );
+    // The big disk first, with the density of -rho
+    dictionary bigDict(fbmDict.subDict("bodies").subDict("big"));
+    bigDict.set("rho", rhoBig);
+    bodies.append(translatingBody("big", bigDict, mesh, dicts));
 
-    // The bed: particles ( (x y z) radius ... ) with the list's rho
+    // The bed: the particle list of particleLists/small, read as fbmFoam
+    // reads it
     const dictionary& smallDict =
         fbmDict.subDict("particleLists").subDict("small");
-    const scalar rhoSmall = smallDict.get<scalar>("rho");
-    ITstream& is = smallDict.lookup("particles");
-    token tok(is);
-    if (tok.isLabel()) is >> tok;
-    if (!tok.isPunctuation() || tok.pToken() != token::BEGIN_LIST)
+    DynamicList<dictionary*> smallDicts;
+    DynamicList<word> smallNames;
+    fbm::fictitiousBoundary::readParticleList
+    (
+        smallDict, smallDicts, smallNames
+    );
+    forAll(smallDicts, i)
     {
-        FatalIOErrorInFunction(smallDict)
-            << "particles: expected a list ( (x y z) radius ... )"
-            << exit(FatalIOError);
-    }
-    while (true)
-    {
-        is >> tok;
-        if (!tok.good())
-        {
-            FatalIOErrorInFunction(smallDict)
-                << "particles: the list ends before its ')'"
-                << exit(FatalIOError);
-        }
-        if (tok.isPunctuation() && tok.pToken() == token::END_LIST) break;
-        is.putBack(tok);
-        point X;
-        scalar r;
-        is >> X >> r;
-        is.check(FUNCTION_NAME);
-        list.append
+        bodies.append
         (
-            makeBody
-            (
-                "small" + Foam::name(list.size() - 1), shape, X, r,
-                rhoSmall, mesh, dicts
-            ).ptr()
+            translatingBody(smallNames[i], *smallDicts[i], mesh, dicts)
         );
+        delete smallDicts[i];
     }
-    PtrList<fbm::body> bodies(list.size());
-    forAll(list, i) bodies.set(i, list[i]);
+    const scalar rhoSmall = smallDict.get<scalar>("rho");
     Info<< "intruder: big disk rho " << rhoBig << " and " << bodies.size() - 1
         << " bed disks of rho " << rhoSmall << ", rhoFluid " << rhoFluid
         << ", damping " << c << " 1/s" << nl;
