@@ -1,26 +1,33 @@
 #!/usr/bin/python3
 """Collect and plot the big-disk runs of ./Allrun (runs/rho<RHO>-L<level>/).
 
-For every run folder runs/rho<RHO>-L<level>[-random]/ (a copy of
-tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L [-bed
-random]) reads
+For every run folder runs/rho<RHO>-L<level>[-random|-placed][-z<Z>]/ (a
+copy of tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L
+[-bed random|placed], its dampingRatio set to Z) reads
 
     system/caseParameters          rhoBig, level
-    constant/fbmProperties         the radius R of the body 'big'
-    constant/smallParticles        the settled bed (fbmSetParticles): its
-                                   top max(y + r) and the small radius r
+    constant/fbmProperties         the radius R of the body 'big', the
+                                   contacts' dampingRatio
+    constant/smallParticles        the bed at the start (fbmSetParticles):
+                                   its top max(y + r) and the small radius r
+    <last time>/lagrangian/fbmBodies   the bodies at the last written time
     log.blockMesh                  cells, the cavity's bottom (bounding box)
     postProcessing/fbmBodies/*/big.dat, summary.dat   (joined over restarts)
     log.fbmFoam                    CPU time (ExecutionTime)
 
 and writes
 
-    results.csv   one row per run: rho, level, bed, cells, t_end (last time
+    results.csv   one row per run: rho, level, bed, zeta (dampingRatio),
+                  cells, t_end (last time
                   reached), y_start, y_min and t_y_min (the deepest point:
                   lowest centre height of the big disk and when), y_final
                   and Uy_final (centre height and vertical velocity at
                   t_end), reached_bottom (yes when y_min - bottom <= 1.05 R),
-                  bed_top, pair_overlap_r and t_pair, wall_overlap_r and
+                  bed_top, t_cloud (the last written time), bed_top_end
+                  (the bed's top then, away from the big disk: max(y + r) of the small
+                  disks more than 2 R from its centre in x) and depth_end
+                  (bed_top_end - (y - R) of the big disk then: how deep the big disk's
+                  bottom is below it; < 0: above), pair_overlap_r and t_pair, wall_overlap_r and
                   t_wall (largest overlap of any pair / any disk with a
                   wall over the collision sub-steps, summary.dat, as a
                   fraction of the small radius r; 0 when none), n_bodies
@@ -31,8 +38,10 @@ and writes
                   big disk resting on them
 
 Usage: plotResults.py [RUNS] [SUFFIX]
-    RUNS: default runs/ beside this script; SUFFIX: write
-    results<SUFFIX>.csv and height<SUFFIX>.png (default none)
+    RUNS: default runs/ beside this script; SUFFIX: collect the runs
+    rho<RHO>-L<level><SUFFIX> (SUFFIX as ./Allrun names them: none for the
+    crystal bed, -random, -placed, each with -z<Z> for a dampingRatio Z)
+    into results<SUFFIX>.csv and height<SUFFIX>.png (default none)
 
 status is the run's exit status, 'no bed' without constant/smallParticles,
 'bodies' when summary.dat has another number of bodies than 1 + the small
@@ -60,6 +69,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 BIG = 'big'             # the big disk's body name (bodyFiles of the case)
 BOTTOM_FACTOR = 1.05    # reached the bottom: centre within 1.05 R of it
+# run folders: rho<RHO>-L<level>[-random|-placed][-z<Z>]
+RUN_NAME = re.compile(r'^rho([^-]+)-L(?:\d+)(-random|-placed)?(-z[^/]+)?$')
 
 
 def bigRadius(run):
@@ -73,12 +84,21 @@ def bigRadius(run):
     return float(m.group(1))
 
 
+def dampingRatio(run):
+    text = open(os.path.join(run, 'constant', 'fbmProperties')).read()
+    text = re.sub(r'//[^\n]*', '', text)
+    m = re.search(r'\bdampingRatio\s+([0-9.eE+-]+)\s*;', text)
+    return float(m.group(1)) if m else 0.0
+
+
 def collect(run):
     row = {'run': run}
     params = os.path.join(run, 'system', 'caseParameters')
     row['rho'] = float(fbmOutput.dictEntry(params, 'rhoBig'))
     row['level'] = int(fbmOutput.dictEntry(params, 'level'))
-    row['bed'] = 'random' if run.rstrip('/').endswith('-random') else 'crystal'
+    m = RUN_NAME.match(os.path.basename(run.rstrip('/')))
+    row['bed'] = m.group(2)[1:] if m and m.group(2) else 'crystal'
+    row['zeta'] = dampingRatio(run)
     try:
         row['status'] = open(os.path.join(run, 'exitStatus')).read().strip()
     except OSError:
@@ -117,6 +137,16 @@ def collect(run):
         print('%s: %d bodies in summary.dat, expected 1 + %d'
               % (run, row['n_bodies'], len(r)))
         row['status'] = 'bodies'
+    times = fbmOutput.cloudTimes(run)
+    if times:
+        c = fbmOutput.readCloud(run, times[-1], fields=('d',))
+        P, d = c['positions'], c['d']
+        big = np.argmax(d)              # the big disk
+        away = (d < 3*rSmall) & (np.abs(P[:, 0] - P[big, 0]) > 2*R)
+        if away.any():
+            row['t_cloud'] = float(times[-1])
+            row['bed_top_end'] = (P[away, 1] + d[away]/2).max()
+            row['depth_end'] = row['bed_top_end'] - (P[big, 1] - R)
     pairGap, tPair, wallGap, tWall = fbmOutput.largestOverlap(s)
     for key, g, tg in (('pair', pairGap, tPair), ('wall', wallGap, tWall)):
         row[key + '_overlap_r'] = 0.0 if g is None else max(0.0, -g/rSmall)
@@ -135,10 +165,12 @@ def fmt(v):
 def main():
     runs = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, 'runs')
     suffix = sys.argv[2] if len(sys.argv) > 2 else ''
+    name = re.compile(r'^rho[^-]+-L\d+' + re.escape(suffix) + '$')
     found = [p for p in glob.glob(os.path.join(runs, 'rho*-L*'))
-             if os.path.isdir(p)]
+             if os.path.isdir(p) and name.match(os.path.basename(p))]
     if not found:
-        sys.exit('No runs in %s: run ./Allrun first' % runs)
+        sys.exit('No runs rho<RHO>-L<level>%s in %s: run ./Allrun first'
+                 % (suffix, runs))
 
     rows, curves = [], []
     for run in found:
@@ -151,8 +183,9 @@ def main():
     rows = [rows[k] for k in order]
     curves = [curves[k] for k in order]
 
-    cols = ['rho', 'level', 'bed', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
+    cols = ['rho', 'level', 'bed', 'zeta', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
             'y_final', 'Uy_final', 'reached_bottom', 'bed_top',
+            't_cloud', 'bed_top_end', 'depth_end',
             'pair_overlap_r', 't_pair', 'wall_overlap_r', 't_wall',
             'n_bodies', 'cpu_s', 'status']
     out = os.path.join(here, 'results%s.csv' % suffix)
@@ -174,7 +207,7 @@ def main():
 
 
 def plot(rows, curves, suffix):
-    fig, ax = plt.subplots(figsize=(8, 7.5))
+    fig, ax = plt.subplots(figsize=(9.5, 7.5))
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     rhos = sorted(set(r['rho'] for r in rows))
     levels = sorted(set((r['bed'], r['level']) for r in rows))
@@ -184,9 +217,9 @@ def plot(rows, curves, suffix):
             continue
         ax.plot(c[0], c[1], styles[levels.index((r['bed'], r['level'])) % 4],
                 color=colours[rhos.index(r['rho']) % len(colours)],
-                label='rho_s = %g, level %d (%s cells), %s bed, to t = %g'
+                label='rho_s = %g, level %d (%s cells), %s bed, zeta %g, to t = %g'
                 % (r['rho'], r['level'], format(r['cells'], ','), r['bed'],
-                   r['t_end']))
+                   r['zeta'], r['t_end']))
     # the lines of the first crystal run (the random bed's top is 0.04 lower)
     ref = next(r for r, c in zip(rows, curves) if c is not None)
     ref = next((r for r, c in zip(rows, curves)
