@@ -7,7 +7,7 @@ copy of tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L
 
     system/caseParameters          rhoBig, level
     constant/fbmProperties         the radius R of the body 'big', the
-                                   contacts' dampingRatio
+                                   contacts' dampingRatio, projectContacts
     constant/smallParticles        the bed at the start (fbmSetParticles):
                                    its top max(y + r) and the small radius r
     <last time>/lagrangian/fbmBodies   the bodies at the last written time
@@ -18,7 +18,7 @@ copy of tutorials/fbmFoam/bigParticleDiving run with -rho RHO -level L
 and writes
 
     results.csv   one row per run: rho, level, bed, zeta (dampingRatio),
-                  cells, t_end (last time
+                  projectContacts (yes/no), cells, t_end (last time
                   reached), y_start, y_min and t_y_min (the deepest point:
                   lowest centre height of the big disk and when), y_final
                   and Uy_final (centre height and vertical velocity at
@@ -40,7 +40,8 @@ and writes
 Usage: plotResults.py [RUNS] [SUFFIX]
     RUNS: default runs/ beside this script; SUFFIX: collect the runs
     rho<RHO>-L<level><SUFFIX> (SUFFIX as ./Allrun names them: none for the
-    crystal bed, -random, -placed, each with -z<Z> for a dampingRatio Z)
+    crystal bed, -random, -placed, each with -z<Z> for a dampingRatio Z
+    and -pc / -nopc for projectContacts yes / no)
     into results<SUFFIX>.csv and height<SUFFIX>.png (default none)
 
 status is the run's exit status, 'no bed' without constant/smallParticles,
@@ -69,8 +70,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 BIG = 'big'             # the big disk's body name (bodyFiles of the case)
 BOTTOM_FACTOR = 1.05    # reached the bottom: centre within 1.05 R of it
-# run folders: rho<RHO>-L<level>[-random|-placed][-z<Z>]
-RUN_NAME = re.compile(r'^rho([^-]+)-L(?:\d+)(-random|-placed)?(-z[^/]+)?$')
+# run folders: rho<RHO>-L<level>[-random|-placed][-z<Z>][-pc|-nopc]
+RUN_NAME = re.compile(r'^rho([^-]+)-L(?:\d+)(-random|-placed)?(-z[^-/]+)?(-pc|-nopc)?$')
 
 
 def bigRadius(run):
@@ -91,6 +92,13 @@ def dampingRatio(run):
     return float(m.group(1)) if m else 0.0
 
 
+def projectContacts(run):
+    text = open(os.path.join(run, 'constant', 'fbmProperties')).read()
+    text = re.sub(r'//[^\n]*', '', text)
+    m = re.search(r'^\s*projectContacts\s+(\w+)\s*;', text, re.M)
+    return 'yes' if m and m.group(1) in ('yes', 'on', 'true') else 'no'
+
+
 def collect(run):
     row = {'run': run}
     params = os.path.join(run, 'system', 'caseParameters')
@@ -99,6 +107,7 @@ def collect(run):
     m = RUN_NAME.match(os.path.basename(run.rstrip('/')))
     row['bed'] = m.group(2)[1:] if m and m.group(2) else 'crystal'
     row['zeta'] = dampingRatio(run)
+    row['projectContacts'] = projectContacts(run)
     try:
         row['status'] = open(os.path.join(run, 'exitStatus')).read().strip()
     except OSError:
@@ -183,7 +192,7 @@ def main():
     rows = [rows[k] for k in order]
     curves = [curves[k] for k in order]
 
-    cols = ['rho', 'level', 'bed', 'zeta', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
+    cols = ['rho', 'level', 'bed', 'zeta', 'projectContacts', 'cells', 't_end', 'y_start', 'y_min', 't_y_min',
             'y_final', 'Uy_final', 'reached_bottom', 'bed_top',
             't_cloud', 'bed_top_end', 'depth_end',
             'pair_overlap_r', 't_pair', 'wall_overlap_r', 't_wall',
@@ -217,9 +226,11 @@ def plot(rows, curves, suffix):
             continue
         ax.plot(c[0], c[1], styles[levels.index((r['bed'], r['level'])) % 4],
                 color=colours[rhos.index(r['rho']) % len(colours)],
-                label='rho_s = %g, level %d (%s cells), %s bed, zeta %g, to t = %g'
+                label='rho_s = %g, level %d (%s cells), %s bed, zeta %g%s, '
+                'to t = %g'
                 % (r['rho'], r['level'], format(r['cells'], ','), r['bed'],
-                   r['zeta'], r['t_end']))
+                   r['zeta'], ', projectContacts'
+                   if r['projectContacts'] == 'yes' else '', r['t_end']))
     # the lines of the first crystal run (the random bed's top is 0.04 lower)
     ref = next(r for r, c in zip(rows, curves) if c is not None)
     ref = next((r for r, c in zip(rows, curves)

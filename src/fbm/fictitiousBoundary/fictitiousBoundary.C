@@ -60,6 +60,17 @@ Foam::fbm::fictitiousBoundary::couplingTypeNames
 
 void Foam::fbm::fictitiousBoundary::updateFields()
 {
+    // projectContacts: the first flow solve takes the contact forces at
+    // the initial positions
+    if
+    (
+        projectContacts_ && collisions_.valid()
+     && collisions_->meanForce().size() != bodies_.size()
+    )
+    {
+        collisions_->initMeanForce(bodies_);
+    }
+
     // Clear the previous footprint
     scalarField& alpha = alpha_.primitiveFieldRef();
     vectorField& Us = Us_.primitiveFieldRef();
@@ -290,6 +301,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             "maxBodyCo", VGREAT, [](scalar c){ return c > 0; }
         )
     ),
+    projectContacts_(getOrDefault<bool>("projectContacts", false)),
     g_(Zero),
     bodies_(),
     projected_(),
@@ -959,6 +971,10 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         const vectorField& U0 = UEqn.psi().oldTime().primitiveField();
         const scalar dt = mesh_.time().deltaTValue();
 
+        // projectContacts: the contact force of the last step on the body,
+        // spread over its cells as alpha V Fc/(rho_f V_b)
+        const List<vector>* Fc = projectedContactForces();
+
         for (const label celli : activeCells_)
         {
             const label bi = label(id[celli]);
@@ -969,6 +985,12 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
                 (bodies_[bi].rho()/rhoFluid_ - 1)*alpha[celli]*V[celli]/dt;
             diag[celli] += c;
             source[celli] += c*(U0[celli] + dt*g_);
+            if (Fc)
+            {
+                source[celli] +=
+                    alpha[celli]*V[celli]*(*Fc)[bi]
+                   /(rhoFluid_*bodies_[bi].shape().volume());
+            }
         }
     }
 
@@ -977,6 +999,21 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         diag[celli] += lambda_[celli];
         source[celli] += lambda_[celli]*Us[celli];
     }
+}
+
+
+const Foam::List<Foam::vector>*
+Foam::fbm::fictitiousBoundary::projectedContactForces() const
+{
+    if
+    (
+        projectContacts_ && collisions_.valid()
+     && collisions_->meanForce().size() == bodies_.size()
+    )
+    {
+        return &collisions_->meanForce();
+    }
+    return nullptr;
 }
 
 
@@ -1042,6 +1079,8 @@ void Foam::fbm::fictitiousBoundary::projectionForces
     // and likewise, per principal axis, its angular velocity. The force
     // is the body's rate of change of momentum less its submerged weight,
     // which fbm::body adds back.
+    const List<vector>* Fc = projectedContactForces();
+
     const scalar dt = mesh_.time().deltaTValue();
     forAll(bodies_, bi)
     {
@@ -1057,6 +1096,11 @@ void Foam::fbm::fictitiousBoundary::projectionForces
            /(M + rhoFluid_*K[bi])
         );
         force[bi] = M*(Unew - b.U())/dt - (M - rhoFluid_*Vb)*g_;
+        if (Fc)
+        {
+            // The contacts act again in the sub-steps that follow
+            force[bi] -= (*Fc)[bi];
+        }
 
         const symmTensor I(b.inertia());
         const vector Lnew(b.rho()*dL[bi] + rhoFluid_*Lu[bi]);

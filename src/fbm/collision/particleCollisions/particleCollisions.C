@@ -344,6 +344,7 @@ void Foam::fbm::particleCollisions::move
     // sub-step); the held forces give the same update as body::move
     List<vector> F(bodies.size(), Zero);
     contactForces(bodies, F);
+    meanForce_ = (0.5/n)*F;
     for (label step = 0; step < n; ++step)
     {
         forAll(bodies, i)
@@ -355,6 +356,11 @@ void Foam::fbm::particleCollisions::move
         }
 
         contactForces(bodies, F);
+        const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
+        forAll(F, i)
+        {
+            meanForce_[i] += w*F[i];
+        }
 
         forAll(bodies, i)
         {
