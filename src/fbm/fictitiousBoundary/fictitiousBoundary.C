@@ -419,6 +419,15 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     selectBodies();
 
     projected_.setSize(bodies_.size(), false);
+    if (projectContacts_ && coupling_ != couplingType::rigidProjection)
+    {
+        FatalIOErrorInFunction(*this)
+            << "projectContacts yes with coupling "
+            << couplingTypeNames[coupling_] << " in " << objectPath() << nl
+            << "    The contact forces go into the flow solve of coupling"
+            << " rigidProjection only: remove projectContacts or set it to"
+            << " no" << exit(FatalIOError);
+    }
     if (coupling_ == couplingType::rigidProjection)
     {
         forAll(bodies_, bi)
