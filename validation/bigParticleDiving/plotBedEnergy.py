@@ -36,7 +36,6 @@ Run it with Debian's python3 (/usr/bin/python3, python3-matplotlib).
 
 import csv
 import os
-import re
 import sys
 
 import numpy as np
@@ -44,17 +43,11 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, '..', '..', 'bin'))
 import fbmOutput  # noqa: E402
+from plotResults import dampingRatio  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def dampingRatio(run):
-    text = open(os.path.join(run, 'constant', 'fbmProperties')).read()
-    text = re.sub(r'//[^\n]*', '', text)
-    m = re.search(r'\bdampingRatio\s+([0-9.eE+-]+)\s*;', text)
-    return float(m.group(1)) if m else 0.0
 
 
 def at(t, v, time):

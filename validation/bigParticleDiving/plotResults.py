@@ -93,10 +93,9 @@ def dampingRatio(run):
 
 
 def projectContacts(run):
-    text = open(os.path.join(run, 'constant', 'fbmProperties')).read()
-    text = re.sub(r'//[^\n]*', '', text)
-    m = re.search(r'^\s*projectContacts\s+(\w+)\s*;', text, re.M)
-    return 'yes' if m and m.group(1) in ('yes', 'on', 'true') else 'no'
+    v = fbmOutput.dictEntry(os.path.join(run, 'constant', 'fbmProperties'),
+                            'projectContacts')
+    return 'yes' if v in ('yes', 'on', 'true') else 'no'
 
 
 def collect(run):

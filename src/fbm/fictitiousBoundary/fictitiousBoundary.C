@@ -983,6 +983,15 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
         // projectContacts: the contact force of the last step on the body,
         // spread over its cells as alpha V Fc/(rho_f V_b)
         const List<vector>* Fc = projectedContactForces();
+        scalarList rhoVb;
+        if (Fc)
+        {
+            rhoVb.setSize(bodies_.size());
+            forAll(rhoVb, bi)
+            {
+                rhoVb[bi] = rhoFluid_*bodies_[bi].shape().volume();
+            }
+        }
 
         for (const label celli : activeCells_)
         {
@@ -996,9 +1005,7 @@ void Foam::fbm::fictitiousBoundary::constrain(fvMatrix<vector>& UEqn) const
             source[celli] += c*(U0[celli] + dt*g_);
             if (Fc)
             {
-                source[celli] +=
-                    alpha[celli]*V[celli]*(*Fc)[bi]
-                   /(rhoFluid_*bodies_[bi].shape().volume());
+                source[celli] += alpha[celli]*V[celli]*(*Fc)[bi]/rhoVb[bi];
             }
         }
     }

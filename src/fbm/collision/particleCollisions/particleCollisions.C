@@ -344,7 +344,12 @@ void Foam::fbm::particleCollisions::move
     // sub-step); the held forces give the same update as body::move
     List<vector> F(bodies.size(), Zero);
     contactForces(bodies, F);
-    meanForce_ = (0.5/n)*F;
+    // The mean force is kept only once initMeanForce() asked for it
+    const bool keepMean = (meanForce_.size() == bodies.size());
+    if (keepMean)
+    {
+        meanForce_ = (0.5/n)*F;
+    }
     for (label step = 0; step < n; ++step)
     {
         forAll(bodies, i)
@@ -356,10 +361,13 @@ void Foam::fbm::particleCollisions::move
         }
 
         contactForces(bodies, F);
-        const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
-        forAll(F, i)
+        if (keepMean)
         {
-            meanForce_[i] += w*F[i];
+            const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
+            forAll(F, i)
+            {
+                meanForce_[i] += w*F[i];
+            }
         }
 
         forAll(bodies, i)
