@@ -471,12 +471,38 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         IOobject::NO_WRITE,
         false
     );
+    // projectContacts: the mean contact force of the step that led to the
+    // restart time, when the earlier run wrote it (contactForce)
+    List<vector> restartContactForce;
     if (stateIO.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary state(stateIO);
+        label nContact = 0;
         for (body& b : bodies_)
         {
-            b.readState(state.subDict(b.name()));
+            const dictionary& bd = state.subDict(b.name());
+            b.readState(bd);
+            if (bd.found("contactForce")) ++nContact;
+        }
+        if (projectContacts_ && nContact == bodies_.size())
+        {
+            restartContactForce.setSize(bodies_.size());
+            forAll(bodies_, bi)
+            {
+                restartContactForce[bi] =
+                    state.subDict(bodies_[bi].name()).get<vector>
+                    (
+                        "contactForce"
+                    );
+            }
+        }
+        else if (nContact && nContact != bodies_.size())
+        {
+            FatalIOErrorInFunction(state)
+                << "contactForce given for " << nContact << " of the "
+                << bodies_.size() << " bodies in " << state.objectPath()
+                << nl << "    Give it for every body or for none"
+                << exit(FatalIOError);
         }
         Info<< "fbm: body state read from " << state.objectPath() << nl;
     }
@@ -564,6 +590,12 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         (
             new particleCollisions(subDict("collisions"), mesh, bodies_)
         );
+        if (restartContactForce.size())
+        {
+            collisions_->setMeanForce(restartContactForce);
+            Info<< "fbm: projectContacts: contact forces of the last step"
+                << " read with the body state" << nl;
+        }
     }
 
     updateFields();
@@ -756,10 +788,18 @@ void Foam::fbm::fictitiousBoundary::writeState() const
     // precision (controlDict's writePrecision): full precision for an
     // exact restart whatever that is
     const unsigned oldPrecision = IOstream::defaultPrecision(17);
-    for (const body& b : bodies_)
+    // projectContacts: the contact forces the next flow solve takes, so
+    // that a restart repeats an uninterrupted run
+    const List<vector>* Fc = projectedContactForces();
+    forAll(bodies_, bi)
     {
+        const body& b = bodies_[bi];
         dictionary d;
         b.writeState(d);
+        if (Fc)
+        {
+            d.add("contactForce", (*Fc)[bi]);
+        }
         os.beginBlock(b.name());
         d.write(os, false);
         os.endBlock();
