@@ -220,7 +220,8 @@ int main(int argc, char *argv[])
                     << "not finite at t = " << t << exit(FatalError);
             }
             csv << t << ',' << (big.centre() & up) << ',' << (big.U() & up)
-                << ',' << maxU << ',' << minPair << ',' << minWall << nl;
+                << ',' << maxU << ',' << minPair << ',' << minWall
+                << endl;    // kept when a later step stops the run
             minPair = GREAT;
             minWall = GREAT;
             tNext += dtWrite;
