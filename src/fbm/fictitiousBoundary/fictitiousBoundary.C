@@ -301,7 +301,14 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             "maxBodyCo", VGREAT, [](scalar c){ return c > 0; }
         )
     ),
-    projectContacts_(getOrDefault<bool>("projectContacts", false)),
+    projectContacts_
+    (
+        getOrDefault<bool>
+        (
+            "projectContacts",
+            coupling_ == couplingType::rigidProjection && isDict("collisions")
+        )
+    ),
     g_(Zero),
     bodies_(),
     projected_(),
@@ -568,6 +575,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
         << ", forcing " << forcingTypeNames[forcing_]
         << ", coupling " << couplingTypeNames[coupling_]
+        << (projectContacts_ ? " (projectContacts)" : "")
         << ", nSubdivision " << nSubdivision_
         << ", penaltyMax " << penaltyMax_ << nl;
 
