@@ -247,11 +247,36 @@ Foam::vector Foam::fbm::body::linearAcceleration
     const scalar M = rho_*V;
     const scalar Mf = rhoFluid*V;
 
+    // Summed in this order (heldTranslation and fbm::particleCollisions
+    // repeat it)
     const vector Fnet
     (
         (M - Mf)*g + force_ + contactForce + addedMassCoeff*Mf*aLag
     );
     return cmptMultiply(planeMask_, Fnet/(M + addedMassCoeff*Mf));
+}
+
+
+void Foam::fbm::body::heldTranslation
+(
+    const vector& g,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    vector& Fheld,
+    vector& Flag,
+    scalar& Meff,
+    vector& mask
+) const
+{
+    // The terms of linearAcceleration with aLag = aHeld_
+    const scalar V = shape_->volume();
+    const scalar M = rho_*V;
+    const scalar Mf = rhoFluid*V;
+
+    Fheld = (M - Mf)*g + force_;
+    Flag = addedMassCoeff*Mf*aHeld_;
+    Meff = M + addedMassCoeff*Mf;
+    mask = planeMask_;
 }
 
 
@@ -385,6 +410,46 @@ void Foam::fbm::body::drift(const scalar dt)
     // Integrated or prescribed (held) velocities alike
     centre_ += dt*U_;
     rotateBy(dt*omega_);
+}
+
+
+void Foam::fbm::body::endTranslationSubCycles
+(
+    const point& centre,
+    const vector& U,
+    const scalar rhoFluid,
+    const scalar addedMassCoeff,
+    const label n,
+    const scalar dtSub
+)
+{
+    centre_ = centre;
+    U_ = U;
+
+    // The rotation part of kick() and drift(), sub-step by sub-step
+    if (!rotate_ && magSqr(omega_) == 0)
+    {
+        return;
+    }
+    const scalar h = 0.5*dtSub;
+    for (label step = 0; step < n; ++step)
+    {
+        if (rotate_)
+        {
+            omega_ += h*angularAcceleration
+            (
+                rhoFluid, addedMassCoeff, omegaDotHeld_
+            );
+        }
+        rotateBy(dtSub*omega_);
+        if (rotate_)
+        {
+            omega_ += h*angularAcceleration
+            (
+                rhoFluid, addedMassCoeff, omegaDotHeld_
+            );
+        }
+    }
 }
 
 

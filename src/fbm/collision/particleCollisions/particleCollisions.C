@@ -89,6 +89,12 @@ Foam::fbm::particleCollisions::particleCollisions
     dtSubMax_(GREAT),
     X_(bodies.size()),
     R_(bodies.size()),
+    U_(bodies.size()),
+    translates_(bodies.size()),
+    Fheld_(bodies.size()),
+    Flag_(bodies.size()),
+    Meff_(bodies.size()),
+    mask_(bodies.size()),
     minPairGap_(GREAT),
     minWallGap_(GREAT)
 {
@@ -216,6 +222,24 @@ void Foam::fbm::particleCollisions::contactForces
     List<vector>& F
 )
 {
+    forAll(bodies, i)
+    {
+        const body& b = bodies[i];
+        X_[i] = b.centre();
+        R_[i] = b.shape().radius();
+        U_[i] = b.U();
+        translates_[i] = b.translates();
+    }
+    arrayForces(bodies, F);
+}
+
+
+void Foam::fbm::particleCollisions::arrayForces
+(
+    const PtrList<body>& bodies,
+    List<vector>& F
+)
+{
     const contactModel& law = *model_;
     const scalar range = law.range();
 
@@ -225,11 +249,6 @@ void Foam::fbm::particleCollisions::contactForces
     // Pairs
     if (bodies.size() > 1)
     {
-        forAll(bodies, i)
-        {
-            X_[i] = bodies[i].centre();
-            R_[i] = bodies[i].shape().radius();
-        }
         search_.search(X_, R_, range);
 
         for (const labelPair& ij : search_.pairs())
@@ -257,7 +276,7 @@ void Foam::fbm::particleCollisions::contactForces
                 const vector Fd
                 (
                     -(2*dampingRatio_*Foam::sqrt(k*mr)/depth_)
-                   *((bodies[i].U() - bodies[j].U()) & n)*n
+                   *((U_[i] - U_[j]) & n)*n
                 );
                 F[i] += Fd;
                 F[j] -= Fd;
@@ -266,20 +285,20 @@ void Foam::fbm::particleCollisions::contactForces
     }
 
     // Walls within reach
-    forAll(bodies, i)
+    forAll(X_, i)
     {
-        const body& b = bodies[i];
-        if (!b.translates()) continue;
+        if (!translates_[i]) continue;
 
-        const point& X = b.centre();
-        const scalar R = b.shape().radius();
+        const point& X = X_[i];
+        const scalar R = R_[i];
         forAll(walls_.names(), w)
         {
             const scalar d = walls_.distance(w, X);
             if (d <= 0)
             {
                 FatalErrorInFunction
-                    << "Body " << b.name() << " (centre " << X << ") has"
+                    << "Body " << bodies[i].name() << " (centre " << X
+                    << ") has"
                     << " crossed the wall " << walls_.names()[w]
                     << ": the contact law is too soft for this impact"
                     << " (lower epsWOverlap) or the run has diverged"
@@ -295,16 +314,16 @@ void Foam::fbm::particleCollisions::contactForces
                     const scalar k = depth_*law.wallStiffness(R);
                     F[i] -=
                         (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
-                       *(b.U() & n)*n;
+                       *(U_[i] & n)*n;
                 }
                 F[i] += law.wallForce(X, R, Xw);
             }
         }
     }
 
-    forAll(bodies, i)
+    forAll(F, i)
     {
-        F[i] = bodies[i].translates() ? depth_*F[i] : vector::zero;
+        F[i] = translates_[i] ? depth_*F[i] : vector::zero;
     }
 }
 
@@ -334,16 +353,47 @@ void Foam::fbm::particleCollisions::move
 
     Info<< "fbm: collisions: " << n << " sub-steps of " << dtSub << nl;
 
-    for (body& b : bodies)
+    // The state the sub-steps advance, in arrays (bodies that do not move
+    // keep theirs)
+    boolList moves(bodies.size());
+    forAll(bodies, i)
     {
-        if (b.moves()) b.beginSubCycles();
+        body& b = bodies[i];
+        moves[i] = b.moves();
+        if (moves[i]) b.beginSubCycles();
+        X_[i] = b.centre();
+        R_[i] = b.shape().radius();
+        U_[i] = b.U();
+        translates_[i] = b.translates();
+        if (translates_[i])
+        {
+            b.heldTranslation
+            (
+                g, rhoFluid, addedMassCoeff,
+                Fheld_[i], Flag_[i], Meff_[i], mask_[i]
+            );
+        }
     }
 
     // Velocity Verlet: half kick with the contact forces at the start,
     // drift, half kick with those at the end (which start the next
-    // sub-step); the held forces give the same update as body::move
+    // sub-step); the held forces give the same update as body::move. The
+    // kick is body::kick's: U += h mask ((Fheld + F' + Flag)/Meff)
+    const scalar h = 0.5*dtSub;
+    auto kick = [&](const List<vector>& F)
+    {
+        forAll(X_, i)
+        {
+            if (!translates_[i]) continue;
+            U_[i] += h*cmptMultiply
+            (
+                mask_[i], (Fheld_[i] + F[i] + Flag_[i])/Meff_[i]
+            );
+        }
+    };
+
     List<vector> F(bodies.size(), Zero);
-    contactForces(bodies, F);
+    arrayForces(bodies, F);
     // The mean force is kept only once initMeanForce() asked for it
     const bool keepMean = (meanForce_.size() == bodies.size());
     if (keepMean)
@@ -352,15 +402,13 @@ void Foam::fbm::particleCollisions::move
     }
     for (label step = 0; step < n; ++step)
     {
-        forAll(bodies, i)
+        kick(F);
+        forAll(X_, i)
         {
-            body& b = bodies[i];
-            if (!b.moves()) continue;
-            b.kick(g, rhoFluid, addedMassCoeff, 0.5*dtSub, F[i]);
-            b.drift(dtSub);
+            if (moves[i]) X_[i] += dtSub*U_[i];
         }
 
-        contactForces(bodies, F);
+        arrayForces(bodies, F);
         if (keepMean)
         {
             const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
@@ -370,17 +418,18 @@ void Foam::fbm::particleCollisions::move
             }
         }
 
-        forAll(bodies, i)
-        {
-            body& b = bodies[i];
-            if (!b.moves()) continue;
-            b.kick(g, rhoFluid, addedMassCoeff, 0.5*dtSub, F[i]);
-        }
+        kick(F);
     }
 
-    for (body& b : bodies)
+    forAll(bodies, i)
     {
-        if (b.moves()) b.endSubCycles(dt);
+        if (!moves[i]) continue;
+        body& b = bodies[i];
+        b.endTranslationSubCycles
+        (
+            X_[i], U_[i], rhoFluid, addedMassCoeff, n, dtSub
+        );
+        b.endSubCycles(dt);
     }
 }
 

@@ -1,0 +1,141 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+Application
+    Test-demMove
+
+Description
+    Time of one DEM sub-step of the library, fbm::particleCollisions::move
+    on fbm::body objects (what fbmFoam runs), against the number of
+    particles N: the lattice of Test-demScaling (disks of radius 0.025,
+    surface gap 0.005, inside the range 0.01, a jitter of 0.001) in the
+    case's box, at rest under gravity, with the walls of the mesh, the
+    dashpot of the tutorials (dampingRatio 0.5) and no hydrodynamic force.
+    Each N: one move() of -steps sub-steps to warm up, then one timed.
+    Prints the time per sub-step and per particle, and the ratio to the
+    smallest N.
+
+Usage
+    Test-demMove -case CASE [-N '(1000 10000 100000)'] [-steps 20]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include <chrono>
+#include "Random.H"
+#include "IStringStream.H"
+#include "body.H"
+#include "particleCollisions.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList::addOption("N", "list", "particle numbers");
+    argList::addOption("steps", "n", "sub-steps timed per N");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const labelList Ns
+    (
+        args.getOrDefault<labelList>("N", labelList({1000, 10000, 100000}))
+    );
+    const label nSteps = args.getOrDefault<label>("steps", 20);
+
+    const dictionary dict
+    (
+        IStringStream
+        (
+            "model singhRepulsion;"
+            "singhRepulsionCoeffs"
+            "{"
+            "    overlapForce rangePlusLinear;"
+            "    range 0.01; epsP 1e-5; epsPOverlap 1e-4;"
+            "    epsW 5e-6; epsWOverlap 5e-5;"
+            "}"
+            "nStepsPerContact 20;"
+            "dampingRatio 0.5;"
+            "maxSubCycles 100000;"
+        )()
+    );
+
+    const scalar r = 0.025;
+    const scalar pitch = 2*r + 0.005;
+    const vector g(0, -980, 0);
+    const scalar zMid = 0.5*(mesh.bounds().min().z() + mesh.bounds().max().z());
+    const point origin(mesh.bounds().min() + vector(0.05, 0.05, 0));
+
+    Info<< "N  time/sub-step [s]  time/(sub-step N) [s]  ratio to N = "
+        << Ns[0] << " (per particle)" << nl;
+
+    scalar perParticle0 = -1;
+    for (const label N : Ns)
+    {
+        const label nx = label(std::ceil(std::sqrt(scalar(N))));
+        if (origin.x() + nx*pitch > mesh.bounds().max().x() - 0.05)
+        {
+            FatalErrorInFunction
+                << N << " disks do not fit into the mesh " << mesh.bounds()
+                << exit(FatalError);
+        }
+
+        Random rnd(1);
+        PtrList<fbm::body> bodies(N);
+        forAll(bodies, i)
+        {
+            const point X
+            (
+                origin.x() + (i % nx)*pitch
+              + 0.001*(rnd.sample01<scalar>() - 0.5),
+                origin.y() + (i/nx)*pitch
+              + 0.001*(rnd.sample01<scalar>() - 0.5),
+                zMid
+            );
+            dictionary d;
+            d.add("type", "circle");
+            d.add("radius", r);
+            d.add("rho", 1.5);
+            d.add("centre", X);
+            d.add("U", vector::zero);
+            d.add("omega", vector::zero);
+            d.add("translate", true);
+            d.add("rotate", false);
+            bodies.set(i, new fbm::body("p" + Foam::name(i), d, mesh));
+        }
+
+        fbm::particleCollisions collisions(dict, mesh, bodies);
+        const scalar dt = nSteps*collisions.dtSubMax();
+
+        collisions.move(bodies, g, 1, 0, dt);
+        const auto start = std::chrono::steady_clock::now();
+        collisions.move(bodies, g, 1, 0, dt);
+        const scalar t =
+            std::chrono::duration<double>
+            (
+                std::chrono::steady_clock::now() - start
+            ).count()/nSteps;
+        const scalar perParticle = t/N;
+        if (perParticle0 < 0) perParticle0 = perParticle;
+
+        Info<< N << "  " << t << "  " << perParticle << "  "
+            << perParticle/perParticle0 << nl;
+    }
+
+    Info<< "End" << nl;
+    return 0;
+}
+
+
+// ************************************************************************* //
