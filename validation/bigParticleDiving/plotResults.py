@@ -257,7 +257,8 @@ def plot(rows, curves, suffix):
                  % (R, ref.get('n_bodies', 1) - 1))
     ax.legend(fontsize=8, loc='upper center', bbox_to_anchor=(0.5, -0.1), ncol=2)
     fig.tight_layout()
-    fig.savefig(os.path.join(here, 'height%s.png' % suffix), dpi=120)
+    fig.savefig(os.path.join(here, 'height%s.png' % suffix), dpi=120,
+                bbox_inches='tight')
 
 
 if __name__ == '__main__':
