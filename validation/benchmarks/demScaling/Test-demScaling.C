@@ -31,10 +31,9 @@ Usage
 #include "mathematicalConstants.H"
 #include <chrono>
 #include "cpuTime.H"
-#include "Random.H"
 #include "contactSearch.H"
 #include "contactModel.H"
-#include "IStringStream.H"
+#include "demLattice.H"
 
 using namespace Foam;
 
@@ -55,24 +54,11 @@ int main(int argc, char *argv[])
     );
     const label nSteps = args.getOrDefault<label>("steps", 20);
 
-    const dictionary dict
-    (
-        IStringStream
-        (
-            "model singhRepulsion;"
-            "singhRepulsionCoeffs"
-            "{"
-            "    overlapForce rangePlusLinear;"
-            "    range 0.01; epsP 1e-5; epsPOverlap 1e-4;"
-            "    epsW 5e-6; epsWOverlap 5e-5;"
-            "}"
-        )()
-    );
+    const dictionary dict(demLattice::collisionsDict());
     const scalar h = 0.0125;
     autoPtr<fbm::contactModel> law(fbm::contactModel::New(dict, h));
 
-    const scalar r = 0.025;
-    const scalar pitch = 2*r + 0.005;
+    const scalar r = demLattice::radius;
     const scalar m = 1.5*constant::mathematical::pi*r*r;
     const scalar dt = 1e-5;
 
@@ -82,20 +68,9 @@ int main(int argc, char *argv[])
     scalar perParticle0 = -1;
     for (const label N : Ns)
     {
-        const label nx = label(std::ceil(std::sqrt(scalar(N))));
-        Random rnd(1);
-        pointField X(N);
+        pointField X(demLattice::centres(N, point::zero));
         vectorField V(N, Zero);
         scalarField R(N, r);
-        forAll(X, i)
-        {
-            X[i] = point
-            (
-                (i % nx)*pitch + 0.001*(rnd.sample01<scalar>() - 0.5),
-                (i/nx)*pitch + 0.001*(rnd.sample01<scalar>() - 0.5),
-                0
-            );
-        }
         fbm::contactSearch search;
         vectorField F(N, Zero);
         const scalar range = law->range();

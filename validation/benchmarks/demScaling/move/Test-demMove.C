@@ -29,8 +29,7 @@ Usage
 
 #include "fvCFD.H"
 #include <chrono>
-#include "Random.H"
-#include "IStringStream.H"
+#include "demLattice.H"
 #include "body.H"
 #include "particleCollisions.H"
 
@@ -56,26 +55,19 @@ int main(int argc, char *argv[])
 
     const dictionary dict
     (
-        IStringStream
+        demLattice::collisionsDict
         (
-            "model singhRepulsion;"
-            "singhRepulsionCoeffs"
-            "{"
-            "    overlapForce rangePlusLinear;"
-            "    range 0.01; epsP 1e-5; epsPOverlap 1e-4;"
-            "    epsW 5e-6; epsWOverlap 5e-5;"
-            "}"
-            "nStepsPerContact 20;"
-            "dampingRatio 0.5;"
-            "maxSubCycles 100000;"
-        )()
+            "nStepsPerContact 20; dampingRatio 0.5; maxSubCycles 100000;"
+        )
     );
 
-    const scalar r = 0.025;
-    const scalar pitch = 2*r + 0.005;
+    const scalar r = demLattice::radius;
     const vector g(0, -980, 0);
     const scalar zMid = 0.5*(mesh.bounds().min().z() + mesh.bounds().max().z());
-    const point origin(mesh.bounds().min() + vector(0.05, 0.05, 0));
+    const point origin
+    (
+        mesh.bounds().min().x() + 0.05, mesh.bounds().min().y() + 0.05, zMid
+    );
 
     Info<< "N  time/sub-step [s]  time/(sub-step N) [s]  ratio to N = "
         << Ns[0] << " (per particle)" << nl;
@@ -83,31 +75,29 @@ int main(int argc, char *argv[])
     scalar perParticle0 = -1;
     for (const label N : Ns)
     {
-        const label nx = label(std::ceil(std::sqrt(scalar(N))));
-        if (origin.x() + nx*pitch > mesh.bounds().max().x() - 0.05)
+        const pointField X(demLattice::centres(N, origin));
+        const vector margin(0.04, 0.04, 0);     // r + range < 0.04
+        if
+        (
+           !boundBox
+            (
+                mesh.bounds().min() + margin, mesh.bounds().max() - margin
+            ).contains(X)
+        )
         {
             FatalErrorInFunction
                 << N << " disks do not fit into the mesh " << mesh.bounds()
                 << exit(FatalError);
         }
 
-        Random rnd(1);
         PtrList<fbm::body> bodies(N);
         forAll(bodies, i)
         {
-            const point X
-            (
-                origin.x() + (i % nx)*pitch
-              + 0.001*(rnd.sample01<scalar>() - 0.5),
-                origin.y() + (i/nx)*pitch
-              + 0.001*(rnd.sample01<scalar>() - 0.5),
-                zMid
-            );
             dictionary d;
             d.add("type", "circle");
             d.add("radius", r);
             d.add("rho", 1.5);
-            d.add("centre", X);
+            d.add("centre", X[i]);
             d.add("U", vector::zero);
             d.add("omega", vector::zero);
             d.add("translate", true);
