@@ -65,10 +65,11 @@ void Foam::fbm::fictitiousBoundary::updateFields()
     if
     (
         projectContacts_ && collisions_.valid()
-     && collisions_->meanForce().size() != bodies_.size()
+     && projectedForce_.size() != bodies_.size()
     )
     {
         collisions_->initMeanForce(bodies_);
+        projectedForce_ = collisions_->meanForce();
     }
 
     // Clear the previous footprint
@@ -309,6 +310,14 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
             coupling_ == couplingType::rigidProjection && isDict("collisions")
         )
     ),
+    contactRelaxation_
+    (
+        getCheckOrDefault<scalar>
+        (
+            "contactRelaxation", 1, [](scalar b){ return b > 0 && b <= 1; }
+        )
+    ),
+    projectedForce_(),
     g_(Zero),
     bodies_(),
     projected_(),
@@ -426,6 +435,15 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
     selectBodies();
 
     projected_.setSize(bodies_.size(), false);
+    if (!projectContacts_ && found("contactRelaxation"))
+    {
+        FatalIOErrorInFunction(*this)
+            << "contactRelaxation without projectContacts in "
+            << objectPath() << nl
+            << "    It relaxes the contact forces that projectContacts puts"
+            << " into the flow solve: remove it or set projectContacts yes"
+            << exit(FatalIOError);
+    }
     if (projectContacts_ && coupling_ != couplingType::rigidProjection)
     {
         FatalIOErrorInFunction(*this)
@@ -578,6 +596,11 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         << (projectContacts_ ? " (projectContacts)" : "")
         << ", nSubdivision " << nSubdivision_
         << ", penaltyMax " << penaltyMax_ << nl;
+    if (projectContacts_)
+    {
+        Info<< "fbm: projectContacts: contactRelaxation "
+            << contactRelaxation_ << nl;
+    }
 
     const wordList extra
     (
@@ -601,6 +624,7 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary(const fvMesh& mesh)
         if (restartContactForce.size())
         {
             collisions_->setMeanForce(restartContactForce);
+            projectedForce_ = restartContactForce;
             Info<< "fbm: projectContacts: contact forces of the last step"
                 << " read with the body state" << nl;
         }
@@ -716,6 +740,7 @@ bool Foam::fbm::fictitiousBoundary::advanceBodies()
     {
         phaseTimes::scope motionTime(times_, phaseTimes::motion);
         collisions_->move(bodies_, g_, rhoFluid_, addedMassCoeff_, dt);
+        relaxProjectedForce();
         for (const body& b : bodies_)
         {
             if (!b.moves()) continue;
@@ -1072,12 +1097,34 @@ Foam::fbm::fictitiousBoundary::projectedContactForces() const
     if
     (
         projectContacts_ && collisions_.valid()
-     && collisions_->meanForce().size() == bodies_.size()
+     && projectedForce_.size() == bodies_.size()
     )
     {
-        return &collisions_->meanForce();
+        return &projectedForce_;
     }
     return nullptr;
+}
+
+
+void Foam::fbm::fictitiousBoundary::relaxProjectedForce()
+{
+    if (!projectContacts_ || projectedForce_.size() != bodies_.size())
+    {
+        return;
+    }
+    const List<vector>& Fc = collisions_->meanForce();
+    if (contactRelaxation_ == 1)
+    {
+        projectedForce_ = Fc;
+    }
+    else
+    {
+        forAll(projectedForce_, bi)
+        {
+            projectedForce_[bi] +=
+                contactRelaxation_*(Fc[bi] - projectedForce_[bi]);
+        }
+    }
 }
 
 
