@@ -33,7 +33,6 @@ Foam::fbm::bodyShape::bodyShape
     const polyMesh& mesh
 )
 :
-    dict_(dict),
     solutionD_(mesh.solutionD()),
     depth_(1)
 {
