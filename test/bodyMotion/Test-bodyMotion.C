@@ -12,8 +12,10 @@ Application
     Test-bodyMotion
 
 Description
-    The Newton-Euler integration of fbm::body against exact solutions
-    (the case's body0, translate and rotate on, no fluid solve):
+    The Newton-Euler integration of fbm::rigidBodyMotion against exact
+    solutions, on a body built without a dictionary or a fictitiousBoundary
+    (a circle on a 2D mesh, a sphere in 3D, of radius 0.2 and density 2 at
+    the middle of the case's mesh; no fluid solve):
     - free fall in vacuum (rhoFluid 1e-12 times the body density, no
       hydrodynamic force): U = g t and X = X0 + g t^2/2, exact for the
       Euler/trapezoidal scheme with constant acceleration;
@@ -23,12 +25,16 @@ Description
       is the rotation by theta;
     - the virtual-mass stabilisation (addedMassCoeff C_a) keeps the
       constant-force limit a = F_net/M: the acceleration after n steps
-      is a_exact (1 - r^n), r = C_a M_f/(M + C_a M_f).
+      is a_exact (1 - r^n), r = C_a M_f/(M + C_a M_f);
+    - the sub-steps of the contact model (kick, drift, kick: velocity
+      Verlet) with a constant force: U = g t and X = X0 + g t^2/2, exact
+      as well, and the same as the plain steps.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "fictitiousBoundary.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "fbmTest.H"
 
 using namespace Foam;
@@ -39,8 +45,17 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    fbm::fictitiousBoundary fb(mesh);
-    fbm::body& b = const_cast<fbm::body&>(fb.bodies()[0]);
+    autoPtr<fbm::body> bodyPtr
+    (
+        fbm::bodyInput::newRoundBody
+        (
+            "body0", 0.2, 2,
+            fbm::bodyState(mesh.bounds().centre(), Zero, Zero),
+            true, true, mesh
+        )
+    );
+    fbm::body& b = bodyPtr();
+    fbm::bodyState& s = b.state();
 
     const bool twoD = (mesh.nSolutionD() == 2);
     const vector g(0, -9.81, twoD ? 0 : 1.5);
@@ -52,10 +67,10 @@ int main(int argc, char *argv[])
 
     // Free fall in vacuum
     {
-        const scalar rhoVac = 1e-12*b.rho();
+        const fbm::rigidBodyMotion vacuum(g, 1e-12*b.rho(), 0, mesh);
         for (label i = 0; i < nSteps; ++i)
         {
-            b.move(g, rhoVac, 0, dt);
+            vacuum.move(b, dt);
         }
         fbmTest::check
         (
@@ -70,20 +85,17 @@ int main(int argc, char *argv[])
 
     // Buoyancy: start again from rest at X0
     {
-        dictionary state;
-        b.writeState(state);
-        state.set("centre", X0);
-        state.set("U", vector::zero);
-        b.readState(state);
+        s.centre() = X0;
+        s.U() = Zero;
 
-        const scalar rhoF = 0.4*b.rho();
+        const fbm::rigidBodyMotion motion(g, 0.4*b.rho(), 0, mesh);
         for (label i = 0; i < nSteps; ++i)
         {
-            b.move(g, rhoF, 0, dt);
+            motion.move(b, dt);
         }
         fbmTest::check
         (
-            "buoyant fall: a = (1 - rho_f/rho_s) g", b.acceleration(),
+            "buoyant fall: a = (1 - rho_f/rho_s) g", s.acceleration(),
             0.6*g, 1e-12*mag(g)
         );
     }
@@ -95,9 +107,10 @@ int main(int argc, char *argv[])
         const scalar Iaxis = axis & I & axis;
         const scalar T = 0.01*Iaxis;
         b.setForce(vector::zero, T*axis);
+        const fbm::rigidBodyMotion vacuum(g, 1e-12*b.rho(), 0, mesh);
         for (label i = 0; i < nSteps; ++i)
         {
-            b.move(g, 1e-12*b.rho(), 0, dt);
+            vacuum.move(b, dt);
         }
         fbmTest::check
         (
@@ -107,7 +120,7 @@ int main(int argc, char *argv[])
         const scalar theta = 0.5*T*t*t/Iaxis;
         fbmTest::check
         (
-            "constant torque: theta = T t^2 / (2 I)", b.theta(), theta*axis,
+            "constant torque: theta = T t^2 / (2 I)", s.theta(), theta*axis,
             1e-12*theta
         );
         // Rotation by theta about the axis, applied to a vector normal to it
@@ -118,18 +131,15 @@ int main(int argc, char *argv[])
         );
         fbmTest::check
         (
-            "constant torque: Q rotates by theta", b.Q() & e, expected, 1e-12
+            "constant torque: Q rotates by theta", s.Q() & e, expected, 1e-12
         );
     }
 
     // Virtual-mass stabilisation with a constant net force
     {
-        dictionary state;
-        b.writeState(state);
-        state.set("U", vector::zero);
-        state.set("omega", vector::zero);
-        state.set("acceleration", vector::zero);
-        b.readState(state);
+        s.U() = Zero;
+        s.omega() = Zero;
+        s.acceleration() = Zero;
         b.setForce(vector::zero, vector::zero);
 
         const scalar rhoF = 0.9*b.rho();
@@ -138,15 +148,56 @@ int main(int argc, char *argv[])
         const scalar M = b.rho()*V, Mf = rhoF*V;
         const scalar r = Ca*Mf/(M + Ca*Mf);
         const label n = 3;
+        const fbm::rigidBodyMotion motion(g, rhoF, Ca, mesh);
         for (label i = 0; i < n; ++i)
         {
-            b.move(g, rhoF, Ca, dt);
+            motion.move(b, dt);
         }
         const vector aExact((M - Mf)/M*g);
         fbmTest::check
         (
-            "added mass: a_n = a (1 - r^n)", b.acceleration(),
+            "added mass: a_n = a (1 - r^n)", s.acceleration(),
             aExact*(1 - Foam::pow(r, n)), 1e-12*mag(aExact)
+        );
+    }
+
+    // Sub-steps (kick, drift, kick) in vacuum from rest at X0: exact for a
+    // constant force, and the held acceleration is the mean over the step
+    {
+        s.centre() = X0;
+        s.U() = Zero;
+        s.omega() = Zero;
+        s.acceleration() = Zero;
+        s.angularAcceleration() = Zero;
+        b.setForce(vector::zero, vector::zero);
+
+        const fbm::rigidBodyMotion vacuum(g, 1e-12*b.rho(), 0, mesh);
+        const label nSub = 7;
+        const scalar dtSub = dt/nSub;
+        for (label i = 0; i < nSteps; ++i)
+        {
+            b.beginSubCycles();
+            for (label k = 0; k < nSub; ++k)
+            {
+                vacuum.kick(b, 0.5*dtSub, Zero);
+                vacuum.drift(b, dtSub);
+                vacuum.kick(b, 0.5*dtSub, Zero);
+            }
+            vacuum.endSubCycles(b, dt);
+        }
+        fbmTest::check
+        (
+            "sub-steps: U = g t", b.U(), g*t*(1 - 1e-12), 1e-11*mag(g)*t
+        );
+        fbmTest::check
+        (
+            "sub-steps: X = X0 + g t^2/2", b.centre(),
+            X0 + 0.5*g*t*t*(1 - 1e-12), 1e-11*scale
+        );
+        fbmTest::check
+        (
+            "sub-steps: mean acceleration g", s.acceleration(),
+            g*(1 - 1e-12), 1e-9*mag(g)
         );
     }
 

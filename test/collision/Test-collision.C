@@ -12,7 +12,7 @@ Application
     Test-collision
 
 Description
-    The contact model (paper Eq. 9-10, fbm::singhRepulsion), the walls,
+    The contact model (paper Eq. 9-10, fbm::contactModels::singhRepulsion), the walls,
     the grid search and the sub-cycled body update, on a mesh with one
     planar wall patch per side (test/cases/box2D):
     - each branch of the pair law against the hand formula, both overlap
@@ -37,7 +37,8 @@ Description
 #include "contactSearch.H"
 #include "wallPlanes.H"
 #include "particleCollisions.H"
-#include "body.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "Random.H"
 #include "fbmTest.H"
 
@@ -70,18 +71,19 @@ dictionary collisionsDict
 
 
 // Body dictionary
-dictionary bodyDict(const scalar R, const point& X, const vector& U)
+Foam::autoPtr<fbm::body> newBody
+(
+    const word& name,
+    const scalar R,
+    const point& X,
+    const vector& U,
+    const fvMesh& mesh
+)
 {
-    dictionary d;
-    d.add("type", "circle");
-    d.add("radius", R);
-    d.add("rho", 1.0);
-    d.add("centre", X);
-    d.add("U", U);
-    d.add("omega", vector::zero);
-    d.add("translate", true);
-    d.add("rotate", false);
-    return d;
+    return fbm::bodyInput::newRoundBody
+    (
+        name, R, 1.0, fbm::bodyState(X, U, Zero), true, false, mesh
+    );
 }
 
 
@@ -207,8 +209,8 @@ int main(int argc, char *argv[])
         );
         const scalar h = 0.02;
         autoPtr<fbm::contactModel> law(fbm::contactModel::New(dict, h));
-        const fbm::singhRepulsion& sr =
-            refCast<const fbm::singhRepulsion>(law());
+        const fbm::contactModels::singhRepulsion& sr =
+            refCast<const fbm::contactModels::singhRepulsion>(law());
         fbmTest::check("unitsOfH: range = 1.5 h", sr.range(), 1.5*h, 1e-15);
         fbmTest::check("unitsOfH: epsP = 2 h^2", sr.epsP(), 2*h*h, 1e-15);
         fbmTest::check("unitsOfH: epsPOverlap = 3 h", sr.epsPOverlap(), 3*h, 1e-15);
@@ -245,9 +247,8 @@ int main(int argc, char *argv[])
         );
         for (const scalar d : {0.2, 0.125, 0.11, 0.1, 0.09})
         {
-            const dictionary bd(bodyDict(R, point(0.5, d, 0.05), Zero));
             PtrList<fbm::body> bodies(1);
-            bodies.set(0, new fbm::body("b", bd, mesh));
+            bodies.set(0, newBody("b", R, point(0.5, d, 0.05), Zero, mesh));
             fbm::particleCollisions coll(dict, mesh, bodies);
             List<vector> F;
             coll.contactForces(bodies, F);
@@ -332,11 +333,11 @@ int main(int argc, char *argv[])
         (
             collisionsDict("rangePlusLinear", 0.02, 1e-4, 1e-4, 5e-5, 5e-5)
         );
-        const dictionary bd0(bodyDict(R, point(0.35, 0.5, 0.05), vector(u, 0, 0)));
-        const dictionary bd1(bodyDict(R, point(0.65, 0.5, 0.05), vector(-u, 0, 0)));
+        const point X0(0.35, 0.5, 0.05), X1(0.65, 0.5, 0.05);
         PtrList<fbm::body> bodies(2);
-        bodies.set(0, new fbm::body("b0", bd0, mesh));
-        bodies.set(1, new fbm::body("b1", bd1, mesh));
+        bodies.set(0, newBody("b0", R, X0, vector(u, 0, 0), mesh));
+        bodies.set(1, newBody("b1", R, X1, vector(-u, 0, 0), mesh));
+        const fbm::rigidBodyMotion motion(Zero, 1e-12, 0, mesh);
         fbm::particleCollisions coll(dict, mesh, bodies);
 
         const scalar dt = 0.01;
@@ -353,7 +354,7 @@ int main(int argc, char *argv[])
         {
             // minimum distance sampled at every sub-step: one sub-step at a
             // time with the driver's n (same as move())
-            coll.move(bodies, Zero, 1e-12, 0, dt);
+            coll.move(bodies, motion, dt);
             minD = min(minD, mag(bodies[0].centre() - bodies[1].centre()));
             const vector P(bodies[0].mass()*bodies[0].U()
                 + bodies[1].mass()*bodies[1].U());
@@ -362,12 +363,12 @@ int main(int argc, char *argv[])
         // finer sampling of the overlap: repeat with one sub-step per call
         {
             PtrList<fbm::body> b2(2);
-            b2.set(0, new fbm::body("b0", bd0, mesh));
-            b2.set(1, new fbm::body("b1", bd1, mesh));
+            b2.set(0, newBody("b0", R, X0, vector(u, 0, 0), mesh));
+            b2.set(1, newBody("b1", R, X1, vector(-u, 0, 0), mesh));
             const scalar dts = dt/n;
             for (label k = 0; k < 10*n; ++k)
             {
-                coll.move(b2, Zero, 1e-12, 0, dts);
+                coll.move(b2, motion, dts);
                 minD = min(minD, mag(b2[0].centre() - b2[1].centre()));
             }
         }

@@ -30,7 +30,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "fictitiousBoundary.H"
+#include "bodySystem.H"
 #include "fbmTest.H"
 
 using namespace Foam;
@@ -66,7 +66,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    fbm::fictitiousBoundary fb(mesh);
+    fbm::bodySystem fb(mesh);
     const fbm::body& b = fb.bodies()[0];
     const point X = b.centre();
     const scalar rho = fb.rhoFluid();

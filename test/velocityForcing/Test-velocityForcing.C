@@ -27,7 +27,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "fictitiousBoundary.H"
+#include "bodySystem.H"
 #include "fbmTest.H"
 
 using namespace Foam;
@@ -38,7 +38,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    fbm::fictitiousBoundary fb(mesh);
+    fbm::bodySystem fb(mesh);
     const fbm::body& b = fb.bodies()[0];
 
     volVectorField U
@@ -57,14 +57,14 @@ int main(int argc, char *argv[])
     fb.constrain(UEqn);
     UEqn.solve();
 
-    const scalarField& alpha = fb.alpha();
-    const vectorField& Us = fb.Us();
+    const scalarField& alpha = fb.fb().alpha();
+    const vectorField& Us = fb.fb().Us();
     const vectorField uf
     (
         UEqn0.H()().primitiveField()/UEqn0.A()().primitiveField()
     );
     const bool linear =
-        (fb.forcing() == fbm::fictitiousBoundary::forcingType::linearProfile);
+        (fb.fb().forcing() == fbm::fictitiousBoundary::forcingType::linearProfile);
 
     // Expected weight of the blend in a cell
     const lduMatrix& m0 = UEqn0;
@@ -130,7 +130,7 @@ int main(int argc, char *argv[])
     }
 
     Info<< "body " << b.name() << ": U " << b.U() << " omega " << b.omega()
-        << ", forcing " << fbm::fictitiousBoundary::forcingTypeNames[fb.forcing()]
+        << ", forcing " << fbm::fictitiousBoundary::forcingTypeNames[fb.fb().forcing()]
         << ": " << nInside << " fully forced cells, " << nCut
         << " blended cells" << nl;
 

@@ -22,7 +22,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "fictitiousBoundary.H"
+#include "bodySystem.H"
 #include "fbmTest.H"
 
 int main(int argc, char *argv[])
@@ -34,7 +34,7 @@ int main(int argc, char *argv[])
 
     const scalar tol = args.get<scalar>("tol");
 
-    fbm::fictitiousBoundary fb(mesh);
+    fbm::bodySystem fb(mesh);
 
     for (const fbm::body& b : fb.bodies())
     {
@@ -93,7 +93,7 @@ int main(int argc, char *argv[])
         fbmTest::check
         (
             "sum(alpha.solid V) = body volume",
-            (gSum(fb.alpha().primitiveField()*mesh.V()) - vol)/V, 0, 1e-12
+            (gSum(fb.fb().alpha().primitiveField()*mesh.V()) - vol)/V, 0, 1e-12
         );
     }
 

@@ -13,7 +13,7 @@ Application
 
 Description
     Stability map of the contact model without fluid: the overlap
-    stiffness eps'_P (fbm::singhRepulsion, rangePlusLinear, eps'_W =
+    stiffness eps'_P (fbm::contactModels::singhRepulsion, rangePlusLinear, eps'_W =
     eps'_P/2; the range branch fixed at the DKT tutorial's level-3 values,
     range 0.0625, eps_P 1e-5, eps_W 5e-6, cgs, 2D law per unit length)
     against the sub-steps per contact time nStepsPerContact of
@@ -68,7 +68,8 @@ Usage
 #include "fvCFD.H"
 #include "particleCollisions.H"
 #include "contactModel.H"
-#include "body.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "OFstream.H"
 #include "Tuple2.H"
 
@@ -109,18 +110,18 @@ dictionary collisionsDict(const scalar epsPO, const scalar nSteps)
 
 
 // Body dictionary
-dictionary bodyDict(const point& X, const vector& U)
+fbm::body* newBody
+(
+    const word& name,
+    const point& X,
+    const vector& U,
+    const fvMesh& mesh
+)
 {
-    dictionary d;
-    d.add("type", "circle");
-    d.add("radius", R);
-    d.add("rho", rhoS);
-    d.add("centre", X);
-    d.add("U", U);
-    d.add("omega", vector::zero);
-    d.add("translate", true);
-    d.add("rotate", false);
-    return d;
+    return fbm::bodyInput::newRoundBody
+    (
+        name, R, rhoS, fbm::bodyState(X, U, Zero), true, false, mesh
+    ).ptr();
 }
 
 
@@ -164,6 +165,7 @@ scalar bisect(Func f, scalar a, scalar b)
 // law's bound allows it in one sub-step, else the same calls
 void subStep
 (
+    const fvMesh& mesh,
     fbm::particleCollisions& coll,
     PtrList<fbm::body>& bodies,
     const vector& g,
@@ -171,9 +173,10 @@ void subStep
     const bool useMove
 )
 {
+    const fbm::rigidBodyMotion motion(g, rhoF, 0, mesh);
     if (useMove)
     {
-        coll.move(bodies, g, rhoF, 0, dtSub);
+        coll.move(bodies, motion, dtSub);
         return;
     }
 
@@ -182,15 +185,15 @@ void subStep
     coll.contactForces(bodies, F);
     forAll(bodies, i)
     {
-        bodies[i].kick(g, rhoF, 0, 0.5*dtSub, F[i]);
-        bodies[i].drift(dtSub);
+        motion.kick(bodies[i], 0.5*dtSub, F[i]);
+        motion.drift(bodies[i], dtSub);
     }
     coll.contactForces(bodies, F);
     forAll(bodies, i)
     {
-        bodies[i].kick(g, rhoF, 0, 0.5*dtSub, F[i]);
+        motion.kick(bodies[i], 0.5*dtSub, F[i]);
     }
-    for (fbm::body& b : bodies) b.endSubCycles(dtSub);
+    for (fbm::body& b : bodies) motion.endSubCycles(b, dtSub);
 }
 
 
@@ -261,11 +264,11 @@ result headOn
     PtrList<fbm::body> bodies(2);
     bodies.set
     (
-        0, new fbm::body("b0", bodyDict(point(1 - D0/2, 1, z), vector(u, 0, 0)), mesh)
+        0, newBody("b0", point(1 - D0/2, 1, z), vector(u, 0, 0), mesh)
     );
     bodies.set
     (
-        1, new fbm::body("b1", bodyDict(point(1 + D0/2, 1, z), vector(-u, 0, 0)), mesh)
+        1, newBody("b1", point(1 + D0/2, 1, z), vector(-u, 0, 0), mesh)
     );
     const scalar nDict = max(n, scalar(3));
     fbm::particleCollisions coll(collisionsDict(epsPO, nDict), mesh, bodies);
@@ -307,7 +310,7 @@ result headOn
         scalar t = 0;
         while (true)
         {
-            subStep(coll, bodies, Zero, r.dtSub, useMove);
+            subStep(mesh, coll, bodies, Zero, r.dtSub, useMove);
             t += r.dtSub;
             ++r.steps;
 
@@ -391,7 +394,7 @@ result rest
     PtrList<fbm::body> bodies(1);
     bodies.set
     (
-        0, new fbm::body("b0", bodyDict(point(1, R, z), Zero), mesh)
+        0, newBody("b0", point(1, R, z), Zero, mesh)
     );
     const scalar nDict = max(n, scalar(3));
     fbm::particleCollisions coll(collisionsDict(epsPO, nDict), mesh, bodies);
@@ -442,7 +445,7 @@ result rest
     {
         for (label step = 0; step < nSteps; ++step)
         {
-            subStep(coll, bodies, g, r.dtSub, useMove);
+            subStep(mesh, coll, bodies, g, r.dtSub, useMove);
             ++r.steps;
             const scalar y = bodies[0].centre().y();
             const scalar E = energy();
@@ -530,10 +533,8 @@ int main(int argc, char *argv[])
         PtrList<fbm::body> a(2), b(2);
         for (PtrList<fbm::body>* bs : {&a, &b})
         {
-            bs->set(0, new fbm::body("b0",
-                bodyDict(point(1 - D0/2, 1, z), vector(10, 0, 0)), mesh));
-            bs->set(1, new fbm::body("b1",
-                bodyDict(point(1 + D0/2, 1, z), vector(-10, 0, 0)), mesh));
+            bs->set(0, newBody("b0", point(1 - D0/2, 1, z), vector(10, 0, 0), mesh));
+            bs->set(1, newBody("b1", point(1 + D0/2, 1, z), vector(-10, 0, 0), mesh));
         }
         messageStream::level = 0;
         fbm::particleCollisions ca(collisionsDict(1e-5, 3), mesh, a);
@@ -541,8 +542,8 @@ int main(int argc, char *argv[])
         scalar maxDiff = 0;
         for (label i = 0; i < 3000; ++i)
         {
-            subStep(ca, a, vector(0, -gAcc, 0), ca.dtSubMax(), true);
-            subStep(cb, b, vector(0, -gAcc, 0), cb.dtSubMax(), false);
+            subStep(mesh, ca, a, vector(0, -gAcc, 0), ca.dtSubMax(), true);
+            subStep(mesh, cb, b, vector(0, -gAcc, 0), cb.dtSubMax(), false);
             for (label j = 0; j < 2; ++j)
             {
                 maxDiff = max(maxDiff, mag(a[j].centre() - b[j].centre()));
@@ -561,8 +562,7 @@ int main(int argc, char *argv[])
     scalar fixedDt = 0;
     {
         PtrList<fbm::body> bodies(1);
-        bodies.set(0, new fbm::body("b0",
-            bodyDict(point(1, 1, mesh.bounds().centre().z()), Zero), mesh));
+        bodies.set(0, newBody("b0", point(1, 1, mesh.bounds().centre().z()), Zero, mesh));
         messageStream::level = 0;
         fbm::particleCollisions coll(collisionsDict(1e-4, 20), mesh, bodies);
         messageStream::level = infoLevel;

@@ -27,7 +27,7 @@ Description
     before the pressure equation uses it; after the PIMPLE loop their
     hydrodynamic forces and torques are computed (volume integral
     -int sigma . grad(alpha) dV or momentum exchange) and written.
-    See src/fbm/fictitiousBoundary/fictitiousBoundary.H.
+    See src/fbm/bodySystem/bodySystem.H and src/README.md.
 
     \heading Required fields
     \plaintable
@@ -48,7 +48,7 @@ Description
 #include "turbulentTransportModel.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
-#include "fictitiousBoundary.H"
+#include "bodySystem.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

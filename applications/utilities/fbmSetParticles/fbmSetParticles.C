@@ -16,7 +16,7 @@ Group
 
 Description
     Writes a particle list for the particleLists of constant/fbmProperties
-    (see fbm::fictitiousBoundary): particles from lattices and random
+    (see fbm::bodyInput): particles from lattices and random
     packings, optionally settled under gravity by the contact model alone
     (no fluid) to make a bed.
 
@@ -104,7 +104,8 @@ Usage
 #include "Enum.H"
 #include "HashTable.H"
 #include "uniformDimensionedFields.H"
-#include "body.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "particleCollisions.H"
 
 using namespace Foam;
@@ -329,29 +330,25 @@ void settle
     );
 
     // The particles as translating bodies
-    const word shape(mesh.nSolutionD() == 3 ? "sphere" : "circle");
-    PtrList<dictionary> dicts(X.size());
     PtrList<fbm::body> bodies(X.size());
     forAll(X, i)
     {
-        dictionary* d = new dictionary;
-        d->name() = dict.name();
-        d->add("type", shape);
-        d->add("radius", R[i]);
-        d->add("rho", rho);
-        d->add("centre", X[i]);
-        d->add("U", vector::zero);
-        d->add("omega", vector::zero);
-        d->add("translate", true);
-        d->add("rotate", false);
-        dicts.set(i, d);
-        bodies.set(i, new fbm::body("p" + Foam::name(i), *d, mesh));
+        bodies.set
+        (
+            i,
+            fbm::bodyInput::newRoundBody
+            (
+                "p" + Foam::name(i), R[i], rho,
+                fbm::bodyState(X[i], Zero, Zero), true, false, mesh
+            )
+        );
     }
 
     fbm::particleCollisions collisions
     (
         fbmDict.subDict("collisions"), mesh, bodies
     );
+    const fbm::rigidBodyMotion motion(g, rhoFluid, 0, mesh);
 
     scalar t = 0;
     label step = 0;
@@ -363,7 +360,7 @@ void settle
         {
             b.setForce(-c*b.mass()*b.U(), Zero);
         }
-        collisions.move(bodies, g, rhoFluid, 0, dt);
+        collisions.move(bodies, motion, dt);
         t += dt;
         ++step;
 

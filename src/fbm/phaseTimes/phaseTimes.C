@@ -15,6 +15,12 @@ License
 #include "Pstream.H"
 #include "scalarList.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const char* const Foam::fbm::phaseTimes::profilingNames[nPhases] =
+    {"fbm::motion", "fbm::cells", "fbm::forcing", "fbm::forces", "fbm::output"};
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::phaseTimes::phaseTimes()

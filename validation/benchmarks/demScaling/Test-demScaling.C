@@ -17,7 +17,7 @@ Description
     0.01 of the Singh repulsion, so every particle has 4 to 8 interacting
     neighbours) with a random jitter, in a box that grows with N. A
     sub-step is what fbm::particleCollisions does per sub-cycle: the cell
-    list search (fbm::contactSearch), the pair forces (fbm::singhRepulsion,
+    list search (fbm::contactSearch), the pair forces (fbm::contactModels::singhRepulsion,
     paper Eq. 9) and the velocity-Verlet kick and drift. Prints the time
     per sub-step and per particle for each N, and the ratio to the
     smallest N: linear growth gives a constant time per particle.

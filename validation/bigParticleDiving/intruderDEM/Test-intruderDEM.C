@@ -54,31 +54,30 @@ Usage
 #include "IOdictionary.H"
 #include "OFstream.H"
 #include "uniformDimensionedFields.H"
-#include "body.H"
-#include "fictitiousBoundary.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "particleCollisions.H"
 
 using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-//- The body of dict, translating only and starting from rest (the contact
-//  forces are central: no torques)
+//- A circle translating only and starting from rest (the contact forces
+//  are central: no torques)
 fbm::body* translatingBody
 (
     const word& name,
-    const dictionary& dict,
-    const fvMesh& mesh,
-    PtrList<dictionary>& dicts
+    const scalar radius,
+    const scalar rho,
+    const point& centre,
+    const fvMesh& mesh
 )
 {
-    dictionary* d = new dictionary(dict);
-    d->set("U", vector::zero);
-    d->set("omega", vector::zero);
-    d->set("translate", true);
-    d->set("rotate", false);
-    dicts.append(d);
-    return new fbm::body(name, *d, mesh);
+    return fbm::bodyInput::newRoundBody
+    (
+        name, radius, rho, fbm::bodyState(centre, Zero, Zero), true, false,
+        mesh
+    ).ptr();
 }
 
 
@@ -153,31 +152,36 @@ int main(int argc, char *argv[])
             )
         ).value()
     );
-    PtrList<dictionary> dicts;
     PtrList<fbm::body> bodies;
 
     // The big disk first, with the density of -rho
-    dictionary bigDict(fbmDict.subDict("bodies").subDict("big"));
-    bigDict.set("rho", rhoBig);
-    bodies.append(translatingBody("big", bigDict, mesh, dicts));
+    const dictionary& bigDict = fbmDict.subDict("bodies").subDict("big");
+    bodies.append
+    (
+        translatingBody
+        (
+            "big", bigDict.get<scalar>("radius"), rhoBig,
+            bigDict.get<point>("centre"), mesh
+        )
+    );
 
     // The bed: the particle list of particleLists/small, read as fbmFoam
     // reads it
     const dictionary& smallDict =
         fbmDict.subDict("particleLists").subDict("small");
-    DynamicList<dictionary*> smallDicts;
-    DynamicList<word> smallNames;
-    fbm::fictitiousBoundary::readParticleList
-    (
-        smallDict, smallDicts, smallNames
-    );
-    forAll(smallDicts, i)
+    pointField smallX;
+    scalarField smallR, smallRho;
+    fbm::bodyInput::readParticleList(smallDict, smallX, smallR, smallRho);
+    forAll(smallX, i)
     {
         bodies.append
         (
-            translatingBody(smallNames[i], *smallDicts[i], mesh, dicts)
+            translatingBody
+            (
+                "small" + Foam::name(i), smallR[i], smallRho[i], smallX[i],
+                mesh
+            )
         );
-        delete smallDicts[i];
     }
     const scalar rhoSmall = smallDict.get<scalar>("rho");
     Info<< "intruder: big disk rho " << rhoBig << " and " << bodies.size() - 1
@@ -188,6 +192,7 @@ int main(int argc, char *argv[])
     (
         fbmDict.subDict("collisions"), mesh, bodies
     );
+    const fbm::rigidBodyMotion motion(g, rhoFluid, 0, mesh);
 
     OFstream csv(csvName);
     csv.precision(10);
@@ -204,7 +209,7 @@ int main(int argc, char *argv[])
         {
             b.setForce(-c*b.mass()*b.U(), Zero);
         }
-        collisions.move(bodies, g, rhoFluid, 0, dt);
+        collisions.move(bodies, motion, dt);
         t += dt;
         minPair = min(minPair, collisions.minPairGap());
         minWall = min(minWall, collisions.minWallGap());

@@ -27,11 +27,7 @@ namespace fbm
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fbm::bodyShape::bodyShape
-(
-    const dictionary& dict,
-    const polyMesh& mesh
-)
+Foam::fbm::bodyShape::bodyShape(const polyMesh& mesh)
 :
     solutionD_(mesh.solutionD()),
     depth_(1)

@@ -38,17 +38,49 @@ Foam::fbm::bodyShapes::circle::circle
     const polyMesh& mesh
 )
 :
-    bodyShape(dict, mesh),
+    bodyShape(mesh),
     radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; })),
     axes_(direction(0))
 {
+    setAxes(mesh, &dict);
+}
+
+
+Foam::fbm::bodyShapes::circle::circle
+(
+    const scalar radius,
+    const polyMesh& mesh
+)
+:
+    bodyShape(mesh),
+    radius_(radius),
+    axes_(direction(0))
+{
+    setAxes(mesh, nullptr);
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fbm::bodyShapes::circle::setAxes
+(
+    const polyMesh& mesh,
+    const dictionary* dict
+)
+{
     if (mesh.nSolutionD() != 2)
     {
-        FatalIOErrorInFunction(dict)
-            << "A circle needs a 2D mesh (one cell thick, empty front and"
-            << " back), this mesh has " << mesh.nSolutionD()
-            << " solution directions: use 'type sphere;' in 3D"
-            << exit(FatalIOError);
+        const string msg
+        (
+            "A circle needs a 2D mesh (one cell thick, empty front and back),"
+            " this mesh has " + Foam::name(mesh.nSolutionD())
+          + " solution directions: use 'type sphere;' in 3D"
+        );
+        if (dict)
+        {
+            FatalIOErrorInFunction(*dict) << msg.c_str() << exit(FatalIOError);
+        }
+        FatalErrorInFunction << msg.c_str() << exit(FatalError);
     }
 
     label n = 0;
@@ -61,8 +93,6 @@ Foam::fbm::bodyShapes::circle::circle
     }
 }
 
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::scalar Foam::fbm::bodyShapes::circle::triangleArea
 (

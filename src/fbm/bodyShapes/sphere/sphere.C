@@ -38,16 +38,47 @@ Foam::fbm::bodyShapes::sphere::sphere
     const polyMesh& mesh
 )
 :
-    bodyShape(dict, mesh),
+    bodyShape(mesh),
     radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; }))
+{
+    checkMesh(mesh, &dict);
+}
+
+
+Foam::fbm::bodyShapes::sphere::sphere
+(
+    const scalar radius,
+    const polyMesh& mesh
+)
+:
+    bodyShape(mesh),
+    radius_(radius)
+{
+    checkMesh(mesh, nullptr);
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fbm::bodyShapes::sphere::checkMesh
+(
+    const polyMesh& mesh,
+    const dictionary* dict
+)
 {
     if (mesh.nSolutionD() != 3)
     {
-        FatalIOErrorInFunction(dict)
-            << "A sphere needs a 3D mesh, this mesh has "
-            << mesh.nSolutionD() << " solution directions:"
-            << " use 'type circle;' in 2D"
-            << exit(FatalIOError);
+        const string msg
+        (
+            "A sphere needs a 3D mesh, this mesh has "
+          + Foam::name(mesh.nSolutionD())
+          + " solution directions: use 'type circle;' in 2D"
+        );
+        if (dict)
+        {
+            FatalIOErrorInFunction(*dict) << msg.c_str() << exit(FatalIOError);
+        }
+        FatalErrorInFunction << msg.c_str() << exit(FatalError);
     }
 }
 

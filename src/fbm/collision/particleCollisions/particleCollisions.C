@@ -12,6 +12,7 @@ License
 
 #include "particleCollisions.H"
 #include "body.H"
+#include "rigidBodyMotion.H"
 #include "fvMesh.H"
 #include "volMesh.H"
 #include "mathematicalConstants.H"
@@ -94,7 +95,6 @@ Foam::fbm::particleCollisions::particleCollisions
     Fheld_(bodies.size()),
     Flag_(bodies.size()),
     Meff_(bodies.size()),
-    mask_(bodies.size()),
     minPairGap_(GREAT),
     minWallGap_(GREAT)
 {
@@ -331,9 +331,7 @@ void Foam::fbm::particleCollisions::arrayForces
 void Foam::fbm::particleCollisions::move
 (
     PtrList<body>& bodies,
-    const vector& g,
-    const scalar rhoFluid,
-    const scalar addedMassCoeff,
+    const rigidBodyMotion& motion,
     const scalar dt
 )
 {
@@ -367,27 +365,24 @@ void Foam::fbm::particleCollisions::move
         translates_[i] = b.translates();
         if (translates_[i])
         {
-            b.heldTranslation
-            (
-                g, rhoFluid, addedMassCoeff,
-                Fheld_[i], Flag_[i], Meff_[i], mask_[i]
-            );
+            motion.heldTranslation(b, Fheld_[i], Flag_[i], Meff_[i]);
         }
     }
 
     // Velocity Verlet: half kick with the contact forces at the start,
     // drift, half kick with those at the end (which start the next
-    // sub-step); the held forces give the same update as body::move. The
-    // kick is body::kick's: U += h mask ((Fheld + F' + Flag)/Meff)
+    // sub-step); the held forces give the same update as
+    // rigidBodyMotion::move. The kick is rigidBodyMotion::kick's
     const scalar h = 0.5*dtSub;
+    const vector& mask = motion.planeMask();
     auto kick = [&](const List<vector>& F)
     {
         forAll(X_, i)
         {
             if (!translates_[i]) continue;
-            U_[i] += h*cmptMultiply
+            U_[i] += h*rigidBodyMotion::acceleration
             (
-                mask_[i], (Fheld_[i] + F[i] + Flag_[i])/Meff_[i]
+                Fheld_[i], F[i], Flag_[i], Meff_[i], mask
             );
         }
     };
@@ -425,11 +420,8 @@ void Foam::fbm::particleCollisions::move
     {
         if (!moves[i]) continue;
         body& b = bodies[i];
-        b.endTranslationSubCycles
-        (
-            X_[i], U_[i], rhoFluid, addedMassCoeff, n, dtSub
-        );
-        b.endSubCycles(dt);
+        motion.endTranslationSubCycles(b, X_[i], U_[i], n, dtSub);
+        motion.endSubCycles(b, dt);
     }
 }
 

@@ -19,13 +19,16 @@ namespace Foam
 {
 namespace fbm
 {
+namespace contactModels
+{
     defineTypeNameAndDebug(singhRepulsion, 0);
     addToRunTimeSelectionTable(contactModel, singhRepulsion, dictionary);
 }
 }
+}
 
-const Foam::Enum<Foam::fbm::singhRepulsion::overlapForm>
-Foam::fbm::singhRepulsion::overlapFormNames
+const Foam::Enum<Foam::fbm::contactModels::singhRepulsion::overlapForm>
+Foam::fbm::contactModels::singhRepulsion::overlapFormNames
 ({
     { overlapForm::linear, "linear" },
     { overlapForm::rangePlusLinear, "rangePlusLinear" },
@@ -34,7 +37,7 @@ Foam::fbm::singhRepulsion::overlapFormNames
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::scalar Foam::fbm::singhRepulsion::readCoeff
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::readCoeff
 (
     const word& key,
     const label power,
@@ -51,7 +54,7 @@ Foam::scalar Foam::fbm::singhRepulsion::readCoeff
 }
 
 
-Foam::scalar Foam::fbm::singhRepulsion::factor
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::factor
 (
     const scalar D,
     const scalar s,
@@ -76,7 +79,7 @@ Foam::scalar Foam::fbm::singhRepulsion::factor
 }
 
 
-Foam::scalar Foam::fbm::singhRepulsion::stiffness
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::stiffness
 (
     const scalar s,
     const scalar eps,
@@ -108,7 +111,7 @@ Foam::scalar Foam::fbm::singhRepulsion::stiffness
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fbm::singhRepulsion::singhRepulsion
+Foam::fbm::contactModels::singhRepulsion::singhRepulsion
 (
     const dictionary& dict,
     const word& modelType,
@@ -158,7 +161,7 @@ Foam::fbm::singhRepulsion::singhRepulsion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::fbm::singhRepulsion::pairForce
+Foam::vector Foam::fbm::contactModels::singhRepulsion::pairForce
 (
     const point& Xi,
     const scalar Ri,
@@ -171,7 +174,7 @@ Foam::vector Foam::fbm::singhRepulsion::pairForce
 }
 
 
-Foam::vector Foam::fbm::singhRepulsion::wallForce
+Foam::vector Foam::fbm::contactModels::singhRepulsion::wallForce
 (
     const point& Xi,
     const scalar Ri,
@@ -183,7 +186,7 @@ Foam::vector Foam::fbm::singhRepulsion::wallForce
 }
 
 
-Foam::scalar Foam::fbm::singhRepulsion::pairStiffness
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::pairStiffness
 (
     const scalar Ri,
     const scalar Rj
@@ -193,7 +196,7 @@ Foam::scalar Foam::fbm::singhRepulsion::pairStiffness
 }
 
 
-Foam::scalar Foam::fbm::singhRepulsion::wallStiffness(const scalar Ri) const
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::wallStiffness(const scalar Ri) const
 {
     // D' = 2 x wall distance: a displacement x changes D' by 2x
     return 2*stiffness(2*Ri, epsW_, epsWOverlap_);

@@ -11,7 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "momentumExchange.H"
-#include "fictitiousBoundary.H"
+#include "footprint.H"
+#include "body.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -44,7 +45,7 @@ Foam::fbm::forceModels::momentumExchange::momentumExchange
 
 void Foam::fbm::forceModels::momentumExchange::calcForces
 (
-    const fictitiousBoundary& fb,
+    const footprint& fp,
     const volVectorField& U,
     const volScalarField& p,
     const volScalarField& nuEff,
@@ -52,17 +53,17 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
     List<vector>& torque
 ) const
 {
-    const PtrList<body>& bodies = fb.bodies();
-    const scalar rhoFluid = fb.rhoFluid();
-    const vectorField& C = fb.mesh().C().primitiveField();
-    const scalarField& lambda = fb.lambda();
-    const scalarField& bodyID = fb.bodyID().primitiveField();
-    const vectorField& Us = fb.Us().primitiveField();
+    const PtrList<body>& bodies = fp.bodies();
+    const scalar rhoFluid = fp.rhoFluid();
+    const vectorField& C = fp.mesh().C().primitiveField();
+    const scalarField& lambda = fp.lambda();
+    const scalarField& bodyID = fp.bodyID().primitiveField();
+    const vectorField& Us = fp.Us().primitiveField();
 
     force = Zero;
     torque = Zero;
 
-    for (const label celli : fb.activeCells())
+    for (const label celli : fp.activeCells())
     {
         const label bi = label(bodyID[celli]);
         if (bi < 0) continue;
@@ -78,10 +79,11 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
         const body& b = bodies[bi];
         if (b.moves() && Pstream::master())
         {
+            const bodyState& s = b.state();
             const scalar Vf = b.shape().volume();
-            force[bi] += rhoFluid*Vf*b.acceleration();
+            force[bi] += rhoFluid*Vf*s.acceleration();
             torque[bi] +=
-                (rhoFluid/b.rho())*(b.inertia() & b.angularAcceleration());
+                (rhoFluid/b.rho())*(b.inertia() & s.angularAcceleration());
         }
     }
 }

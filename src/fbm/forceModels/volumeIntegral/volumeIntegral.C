@@ -11,7 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "volumeIntegral.H"
-#include "fictitiousBoundary.H"
+#include "footprint.H"
+#include "body.H"
 #include "surfaceFields.H"
 #include "fvcGrad.H"
 #include "bitSet.H"
@@ -44,7 +45,7 @@ Foam::fbm::forceModels::volumeIntegral::volumeIntegral(const dictionary& dict)
 
 void Foam::fbm::forceModels::volumeIntegral::calcForces
 (
-    const fictitiousBoundary& fb,
+    const footprint& fp,
     const volVectorField& U,
     const volScalarField& p,
     const volScalarField& nuEff,
@@ -52,9 +53,9 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
     List<vector>& torque
 ) const
 {
-    const fvMesh& mesh = fb.mesh();
-    const PtrList<body>& bodies = fb.bodies();
-    const scalar rhoFluid = fb.rhoFluid();
+    const fvMesh& mesh = fp.mesh();
+    const PtrList<body>& bodies = fp.bodies();
+    const scalar rhoFluid = fp.rhoFluid();
 
     const tensorField gradU(fvc::grad(U)().primitiveField());
 
@@ -67,7 +68,13 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
     const label nInternal = mesh.nInternalFaces();
 
     // Zero field of mesh size, returned zero
-    scalarField& alphaB = fb.scratch();
+    // This body's fraction in every cell (zero outside its covered cells;
+    // kept zero between calls)
+    scalarField& alphaB = alphaB_;
+    if (alphaB.size() != mesh.nCells())
+    {
+        alphaB.setSize(mesh.nCells(), Zero);
+    }
 
     // Coupled (processor, cyclic) faces, only where the mesh has them: the
     // other side's solid fraction and body index from the evaluated patch
@@ -88,8 +95,8 @@ void Foam::fbm::forceModels::volumeIntegral::calcForces
     HashTable<DynamicList<label>, label, Hash<label>> nbrCells;
     if (coupled)
     {
-        const volScalarField& alpha = fb.alpha();
-        const volScalarField& id = fb.bodyID();
+        const volScalarField& alpha = fp.alpha();
+        const volScalarField& id = fp.bodyID();
         forAll(mesh.boundary(), patchi)
         {
             const fvPatch& pp = mesh.boundary()[patchi];

@@ -30,7 +30,8 @@ Usage
 #include "fvCFD.H"
 #include <chrono>
 #include "demLattice.H"
-#include "body.H"
+#include "bodyInput.H"
+#include "rigidBodyMotion.H"
 #include "particleCollisions.H"
 
 using namespace Foam;
@@ -93,24 +94,24 @@ int main(int argc, char *argv[])
         PtrList<fbm::body> bodies(N);
         forAll(bodies, i)
         {
-            dictionary d;
-            d.add("type", "circle");
-            d.add("radius", r);
-            d.add("rho", 1.5);
-            d.add("centre", X[i]);
-            d.add("U", vector::zero);
-            d.add("omega", vector::zero);
-            d.add("translate", true);
-            d.add("rotate", false);
-            bodies.set(i, new fbm::body("p" + Foam::name(i), d, mesh));
+            bodies.set
+            (
+                i,
+                fbm::bodyInput::newRoundBody
+                (
+                    "p" + Foam::name(i), r, 1.5,
+                    fbm::bodyState(X[i], Zero, Zero), true, false, mesh
+                )
+            );
         }
 
         fbm::particleCollisions collisions(dict, mesh, bodies);
+        const fbm::rigidBodyMotion motion(g, 1, 0, mesh);
         const scalar dt = nSteps*collisions.dtSubMax();
 
-        collisions.move(bodies, g, 1, 0, dt);
+        collisions.move(bodies, motion, dt);
         const auto start = std::chrono::steady_clock::now();
-        collisions.move(bodies, g, 1, 0, dt);
+        collisions.move(bodies, motion, dt);
         const scalar t =
             std::chrono::duration<double>
             (

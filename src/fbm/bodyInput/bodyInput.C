@@ -1,0 +1,317 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "bodyInput.H"
+#include "fvMesh.H"
+#include "HashSet.H"
+#include "ITstream.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
+#include "circle.H"
+#include "sphere.H"
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::fbm::bodyInput::readParticleList
+(
+    const dictionary& listDict,
+    pointField& centres,
+    scalarField& radii,
+    scalarField& rho
+)
+{
+    const word listName(listDict.dictName());
+    const bool hasRho = listDict.found("rho");
+    const scalar rhoShared = hasRho ? listDict.get<scalar>("rho") : -1;
+
+    // particles ( (x y z) radius [rho]  ... ); an optional count in front
+    ITstream& is = listDict.lookup("particles");
+    token tok(is);
+    if (tok.isLabel())
+    {
+        is >> tok;
+    }
+    if (!tok.isPunctuation() || tok.pToken() != token::BEGIN_LIST)
+    {
+        FatalIOErrorInFunction(listDict)
+            << "Keyword particles of " << listName << ": expected a list"
+            << " ( (x y z) radius [rho] ... ), found " << tok.info()
+            << exit(FatalIOError);
+    }
+
+    DynamicList<point> X;
+    DynamicList<scalar> R;
+    DynamicList<scalar> rhos;
+    while (true)
+    {
+        is >> tok;
+        if (!tok.good() || is.bad())
+        {
+            FatalIOErrorInFunction(listDict)
+                << "Keyword particles of " << listName << ": the list ends"
+                << " before its closing ')' (after " << X.size()
+                << " particles)" << exit(FatalIOError);
+        }
+        if (tok.isPunctuation() && tok.pToken() == token::END_LIST)
+        {
+            break;
+        }
+        is.putBack(tok);
+
+        point x;
+        scalar r = -1;
+        is >> x;
+        is >> tok;
+        if (tok.isNumber())
+        {
+            r = tok.number();
+        }
+        is >> tok;
+        scalar rhoi = rhoShared;
+        if (tok.isNumber())
+        {
+            rhoi = tok.number();
+        }
+        else
+        {
+            is.putBack(tok);
+        }
+        is.check(FUNCTION_NAME);
+
+        if (!(r > 0) || !(rhoi > 0))
+        {
+            FatalIOErrorInFunction(listDict)
+                << "Keyword particles of " << listName << ", particle "
+                << X.size() << " (centre " << x << "): radius " << r
+                << " and density " << rhoi << " must be positive"
+                << (hasRho ? "" : " (the list has no shared rho)")
+                << exit(FatalIOError);
+        }
+        X.append(x);
+        R.append(r);
+        rhos.append(rhoi);
+    }
+
+    centres.transfer(X);
+    radii.transfer(R);
+    rho.transfer(rhos);
+}
+
+
+Foam::point Foam::fbm::bodyInput::midPlane
+(
+    const polyMesh& mesh,
+    const point& p
+)
+{
+    point q(p);
+    const Vector<label>& sd = mesh.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0)
+        {
+            q[d] = mesh.bounds().centre()[d];
+        }
+    }
+    return q;
+}
+
+
+Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newRoundBody
+(
+    const word& name,
+    const scalar radius,
+    const scalar rho,
+    const bodyState& state,
+    const bool translate,
+    const bool rotate,
+    const polyMesh& mesh
+)
+{
+    autoPtr<bodyShape> shape;
+    if (mesh.nSolutionD() == 3)
+    {
+        shape.reset(new bodyShapes::sphere(radius, mesh));
+    }
+    else
+    {
+        shape.reset(new bodyShapes::circle(radius, mesh));
+    }
+    bodyState s(state);
+    s.centre() = midPlane(mesh, s.centre());
+    return autoPtr<body>
+    (
+        new body(name, std::move(shape), rho, s, translate, rotate)
+    );
+}
+
+
+Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
+(
+    const word& name,
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const indexedOctree<treeDataCell>& tree
+)
+{
+    autoPtr<bodyShape> shape(bodyShape::New(dict, mesh));
+    const scalar rho =
+        dict.getCheck<scalar>("rho", [](scalar r){ return r > 0; });
+    const point centre(midPlane(mesh, dict.get<point>("centre")));
+    const vector U(dict.get<vector>("U"));
+    const vector omega(dict.get<vector>("omega"));
+    const bool translate = dict.get<bool>("translate");
+    const bool rotate = dict.get<bool>("rotate");
+
+    // In 2D the centre's empty component is put mid-depth (above); the
+    // motion must stay in the plane
+    const Vector<label>& sd = mesh.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0)
+        {
+            if (mag(U[d]) > 0)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Body " << name << ": U " << U << " has a component"
+                    << " in the empty direction of this 2D mesh"
+                    << exit(FatalIOError);
+            }
+        }
+        else if (mesh.nSolutionD() == 2 && mag(omega[d]) > 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << name << ": omega " << omega << " must be"
+                << " along the empty direction of this 2D mesh"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The centre must lie in the mesh (on some processor). The cell test
+    // uses the mesh's tet decomposition, which is built collectively: build
+    // it on every processor first, not only where the centre has candidate
+    // cells (that deadlocked a decomposed run)
+    (void)mesh.tetBasePtIs();
+    const bool found = (body::findCell(mesh, tree, centre) != -1);
+    if (!returnReduce(found, orOp<bool>()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << name << ": centre " << centre
+            << " is outside the mesh (bounds " << mesh.bounds() << ")"
+            << exit(FatalIOError);
+    }
+
+    return autoPtr<body>
+    (
+        new body
+        (
+            name, std::move(shape), rho, bodyState(centre, U, omega),
+            translate, rotate
+        )
+    );
+}
+
+
+void Foam::fbm::bodyInput::read
+(
+    const dictionary& fbmDict,
+    const fvMesh& mesh,
+    const indexedOctree<treeDataCell>& tree,
+    PtrList<body>& bodies,
+    List<const dictionary*>& sources
+)
+{
+    if (!fbmDict.found("bodies") && !fbmDict.found("particleLists"))
+    {
+        FatalIOErrorInFunction(fbmDict)
+            << "Neither bodies nor particleLists in " << fbmDict.name()
+            << exit(FatalIOError);
+    }
+
+    DynamicList<body*> all;
+    DynamicList<const dictionary*> from;
+    wordHashSet names;
+
+    const dictionary* bodiesDict = fbmDict.findDict("bodies");
+    if (bodiesDict)
+    {
+        for (const entry& e : *bodiesDict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*bodiesDict)
+                    << "Entry '" << e.keyword() << "' in bodies is not a"
+                    << " dictionary" << exit(FatalIOError);
+            }
+            names.insert(e.keyword());
+            all.append(newBody(e.keyword(), e.dict(), mesh, tree).ptr());
+            from.append(&e.dict());
+        }
+    }
+
+    const dictionary* lists = fbmDict.findDict("particleLists");
+    if (lists)
+    {
+        for (const entry& e : *lists)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*lists)
+                    << "Entry '" << e.keyword() << "' in particleLists is"
+                    << " not a dictionary" << exit(FatalIOError);
+            }
+            const dictionary& listDict = e.dict();
+            const word& listName = e.keyword();
+
+            pointField X;
+            scalarField R, rho;
+            readParticleList(listDict, X, R, rho);
+
+            // Each particle: the list's shared entries with its centre,
+            // radius and density
+            dictionary base(listDict);
+            base.remove("particles");
+            forAll(X, i)
+            {
+                const word name(listName + Foam::name(i));
+                dictionary d(base);
+                d.name() = listDict.name() + ".particles." + Foam::name(i);
+                d.set("centre", X[i]);
+                d.set("radius", R[i]);
+                d.set("rho", rho[i]);
+                if (!names.insert(name))
+                {
+                    FatalIOErrorInFunction(d)
+                        << "Body name " << name << " of particleLists is"
+                        << " already used in " << fbmDict.name()
+                        << exit(FatalIOError);
+                }
+                all.append(newBody(name, d, mesh, tree).ptr());
+                from.append(&listDict);
+            }
+
+            Info<< "fbm: particle list " << listName << ": " << X.size()
+                << " bodies " << listName << "0 - " << listName
+                << X.size() - 1 << nl;
+        }
+    }
+
+    bodies.setSize(all.size());
+    forAll(all, bi)
+    {
+        bodies.set(bi, all[bi]);
+    }
+    sources = from;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,133 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "explicitForce.H"
+#include "bodySystem.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace couplingModels
+{
+    defineTypeNameAndDebug(explicitForce, 0);
+    addToRunTimeSelectionTable(couplingModel, explicitForce, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fbm::couplingModels::explicitForce::checkDensityRatios() const
+{
+    // One warning for the first such body, with the count
+    const scalar rhoFluid = system_.rhoFluid();
+    label nLight = 0;
+    const body* first = nullptr;
+    for (const body& b : system_.bodies())
+    {
+        if (b.translates() && addedMassCoeff_ == 0 && b.rho() < 1.2*rhoFluid)
+        {
+            if (!nLight) first = &b;
+            ++nLight;
+        }
+    }
+    if (nLight)
+    {
+        WarningInFunction
+            << "Body " << first->name() << ": density ratio "
+            << first->rho()/rhoFluid << " with the explicit coupling"
+            << " and addedMassCoeff 0 in " << dict_.name() << nl
+            << "    is likely to oscillate or diverge (lagged added"
+            << " mass); set addedMassCoeff 0.5 to 1";
+        if (nLight > 1)
+        {
+            Info<< " (" << nLight << " such bodies)";
+        }
+        Info<< endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::couplingModels::explicitForce::explicitForce
+(
+    const dictionary& dict,
+    bodySystem& system
+)
+:
+    couplingModel(dict, system),
+    addedMassCoeff_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
+        )
+    )
+{
+    if (dict.getOrDefault<bool>("projectContacts", false))
+    {
+        FatalIOErrorInFunction(dict)
+            << "projectContacts yes with coupling " << type() << " in "
+            << dict.name() << nl
+            << "    The contact forces go into the flow solve of coupling"
+            << " rigidProjection only: remove projectContacts or set it to"
+            << " no" << exit(FatalIOError);
+    }
+    if (dict.found("contactRelaxation"))
+    {
+        dict.getCheck<scalar>
+        (
+            "contactRelaxation", [](scalar b){ return b > 0 && b <= 1; }
+        );
+        FatalIOErrorInFunction(dict)
+            << "contactRelaxation without projectContacts in "
+            << dict.name() << nl
+            << "    It relaxes the contact forces that projectContacts puts"
+            << " into the flow solve of coupling rigidProjection: remove it"
+            << exit(FatalIOError);
+    }
+
+    checkDensityRatios();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fbm::couplingModels::explicitForce::beforeFlow()
+{
+    return system_.advance();
+}
+
+
+bool Foam::fbm::couplingModels::explicitForce::afterFlow
+(
+    volVectorField& U,
+    List<vector>& force,
+    List<vector>& torque
+)
+{
+    PtrList<body>& bodies = system_.bodies();
+    forAll(bodies, bi)
+    {
+        bodies[bi].setForce(force[bi], torque[bi]);
+    }
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,457 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "rigidProjection.H"
+#include "bodySystem.H"
+#include "fvMatrices.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace couplingModels
+{
+    defineTypeNameAndDebug(rigidProjection, 0);
+    addToRunTimeSelectionTable(couplingModel, rigidProjection, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+const Foam::List<Foam::vector>*
+Foam::fbm::couplingModels::rigidProjection::projectedContactForces() const
+{
+    if
+    (
+        projectContacts_ && system_.hasCollisions()
+     && projectedForce_.size() == system_.bodies().size()
+    )
+    {
+        return &projectedForce_;
+    }
+    return nullptr;
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::relaxProjectedForce()
+{
+    if (!projectedContactForces())
+    {
+        return;
+    }
+    const List<vector>& Fc = system_.collisions().meanForce();
+    if (contactRelaxation_ == 1)
+    {
+        projectedForce_ = Fc;
+    }
+    else
+    {
+        forAll(projectedForce_, bi)
+        {
+            projectedForce_[bi] +=
+                contactRelaxation_*(Fc[bi] - projectedForce_[bi]);
+        }
+    }
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::projectionForces
+(
+    const volVectorField& U,
+    List<vector>& force,
+    List<vector>& torque
+) const
+{
+    // Over the cells of each projected body (fractions a):
+    // - the momentum the body's share gained over the step,
+    //   dP = sum a V (u - u^0), and its moment dL;
+    // - for the rigid blend at the end of the step, which also moves the
+    //   fluid share (1 - a) of partly covered cells towards the body's
+    //   motion (an impulse the body gives): with w = (1 - a) a V,
+    //   K = sum w, Ku = sum w u, and for the rotation KJ = sum w (|r|^2 I
+    //   - r r), Lu = sum w r x u
+    const fvMesh& mesh = system_.mesh();
+    const PtrList<body>& bodies = system_.bodies();
+    const vectorField& u = U.primitiveField();
+    const vectorField& u0 = U.oldTime().primitiveField();
+    const vectorField& C = mesh.C().primitiveField();
+    const scalarField& V = mesh.V();
+
+    const label nb = bodies.size();
+    List<vector> dP(nb, Zero), dL(nb, Zero), Ku(nb, Zero), Lu(nb, Zero);
+    scalarList K(nb, Zero);
+    List<symmTensor> KJ(nb, Zero);
+    forAll(bodies, bi)
+    {
+        if (!projected(bi)) continue;
+
+        const body& b = bodies[bi];
+        const labelList& cells = b.cells();
+        const scalarList& a = b.alpha();
+        forAll(cells, i)
+        {
+            const label celli = cells[i];
+            const vector r(C[celli] - b.centre());
+            const vector du(a[i]*V[celli]*(u[celli] - u0[celli]));
+            dP[bi] += du;
+            dL[bi] += r ^ du;
+
+            const scalar w = (1 - a[i])*a[i]*V[celli];
+            K[bi] += w;
+            Ku[bi] += w*u[celli];
+            KJ[bi] += w*(magSqr(r)*symmTensor::I - sqr(r));
+            Lu[bi] += w*(r ^ u[celli]);
+        }
+    }
+    for (List<vector>* l : {&dP, &dL, &Ku, &Lu})
+    {
+        Pstream::listCombineGather(*l, plusEqOp<vector>());
+        Pstream::listCombineScatter(*l);
+    }
+    Pstream::listCombineGather(K, plusEqOp<scalar>());
+    Pstream::listCombineScatter(K);
+    Pstream::listCombineGather(KJ, plusEqOp<symmTensor>());
+    Pstream::listCombineScatter(KJ);
+
+    // The body's new velocity conserves the momentum of the body and of
+    // the fluid share the blend moves:
+    //     M U + rho_f (K U - Ku) = M U^0 + rho_s dP,
+    // and likewise, per principal axis, its angular velocity. The force
+    // is the body's rate of change of momentum less its submerged weight,
+    // which the equations of motion add back.
+    const List<vector>* Fc = projectedContactForces();
+    const scalar rhoFluid = system_.rhoFluid();
+    const vector& g = system_.motion().g();
+
+    const scalar dt = mesh.time().deltaTValue();
+    forAll(bodies, bi)
+    {
+        if (!projected(bi)) continue;
+
+        const body& b = bodies[bi];
+        const scalar Vb = b.shape().volume();
+        const scalar M = b.rho()*Vb;
+
+        const vector Unew
+        (
+            (M*b.U() + b.rho()*dP[bi] + rhoFluid*Ku[bi])
+           /(M + rhoFluid*K[bi])
+        );
+        force[bi] = M*(Unew - b.U())/dt - (M - rhoFluid*Vb)*g;
+        if (Fc)
+        {
+            // The contacts act again in the sub-steps that follow
+            force[bi] -= (*Fc)[bi];
+        }
+
+        const symmTensor I(b.inertia());
+        const vector Lnew(b.rho()*dL[bi] + rhoFluid*Lu[bi]);
+        vector wNew(b.omega());
+        const direction diagCmpt[3] =
+            { symmTensor::XX, symmTensor::YY, symmTensor::ZZ };
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            const scalar Idd = I.component(diagCmpt[d]);
+            if (Idd <= 0) continue;
+            const scalar Kdd = rhoFluid*KJ[bi].component(diagCmpt[d]);
+            wNew[d] = (Idd*b.omega()[d] + Lnew[d])/(Idd + Kdd);
+        }
+        torque[bi] = (I & (wNew - b.omega()))/dt;
+    }
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::rigidify
+(
+    volVectorField& U,
+    const labelList& cells,
+    const scalarList& alpha,
+    const labelList& id,
+    const List<point>& centres
+) const
+{
+    const PtrList<body>& bodies = system_.bodies();
+    vectorField& u = U.primitiveFieldRef();
+    const vectorField& C = system_.mesh().C().primitiveField();
+
+    forAll(cells, i)
+    {
+        const label bi = id[i];
+        if (bi < 0 || !projected(bi)) continue;
+
+        const body& b = bodies[bi];
+        const label celli = cells[i];
+        const vector Ub(b.U() + (b.omega() ^ (C[celli] - centres[bi])));
+        u[celli] = (1 - alpha[i])*u[celli] + alpha[i]*Ub;
+    }
+    U.correctBoundaryConditions();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::couplingModels::rigidProjection::rigidProjection
+(
+    const dictionary& dict,
+    bodySystem& system
+)
+:
+    couplingModel(dict, system),
+    projectContacts_
+    (
+        dict.getOrDefault<bool>("projectContacts", dict.isDict("collisions"))
+    ),
+    contactRelaxation_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "contactRelaxation", 1, [](scalar b){ return b > 0 && b <= 1; }
+        )
+    )
+{
+    if (!projectContacts_ && dict.found("contactRelaxation"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "contactRelaxation without projectContacts in "
+            << dict.name() << nl
+            << "    It relaxes the contact forces that projectContacts puts"
+            << " into the flow solve: remove it or set projectContacts yes"
+            << exit(FatalIOError);
+    }
+
+    // The added mass is in the fluid solve: no virtual-mass term
+    const scalar Ca = dict.getCheckOrDefault<scalar>
+    (
+        "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
+    );
+    if (Ca != 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "addedMassCoeff " << Ca << " with coupling rigidProjection in "
+            << dict.name() << nl
+            << "    The rigid projection carries the added mass in the"
+            << " fluid solve; addedMassCoeff is for the explicit"
+            << " coupling only: remove it or set it to 0"
+            << exit(FatalIOError);
+    }
+
+    // The extra inertia of the bodies is an implicit Euler term
+    const fvMesh& mesh = system.mesh();
+    const word ddtU(mesh.ddtScheme("ddt(U)")[0].wordToken());
+    if (ddtU != "Euler")
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "coupling rigidProjection (" << dict.name() << ")"
+            << " needs ddtSchemes Euler for ddt(U), not " << ddtU
+            << exit(FatalIOError);
+    }
+
+    const PtrList<body>& bodies = system.bodies();
+    forAll(bodies, bi)
+    {
+        penalised_[bi] = !(bodies[bi].translates() || bodies[bi].rotates());
+    }
+
+    if (projectContacts_)
+    {
+        Info<< "fbm: projectContacts: contactRelaxation "
+            << contactRelaxation_ << nl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::fbm::couplingModels::rigidProjection::description() const
+{
+    return type() + (projectContacts_ ? " (projectContacts)" : "");
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::start()
+{
+    if (!projectContacts_ || !system_.hasCollisions())
+    {
+        return;
+    }
+
+    particleCollisions& collisions = system_.collisions();
+    if (restartForce_.size())
+    {
+        collisions.setMeanForce(restartForce_);
+        projectedForce_ = restartForce_;
+        Info<< "fbm: projectContacts: contact forces of the last step"
+            << " read with the body state" << nl;
+    }
+    else
+    {
+        collisions.initMeanForce(system_.bodies());
+        projectedForce_ = collisions.meanForce();
+    }
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::constrain
+(
+    fvMatrix<vector>& UEqn
+) const
+{
+    // The cells of the projected bodies: no penalty, but the body's extra
+    // inertia (rho_s/rho_f - 1) alpha (du/dt - g) with implicit Euler, so
+    // the fluid solve treats them as a heavier fluid
+    const fictitiousBoundary& fb = system_.fb();
+    const PtrList<body>& bodies = system_.bodies();
+    const scalar rhoFluid = system_.rhoFluid();
+    const vector& g = system_.motion().g();
+
+    scalarField& diag = UEqn.diag();
+    vectorField& source = UEqn.source();
+    const scalarField& alpha = fb.alpha();
+    const scalarField& id = fb.bodyID();
+    const scalarField& V = fb.mesh().V();
+    const vectorField& U0 = UEqn.psi().oldTime().primitiveField();
+    const scalar dt = fb.mesh().time().deltaTValue();
+
+    // projectContacts: the contact force of the last step on the body,
+    // spread over its cells as alpha V Fc/(rho_f V_b)
+    const List<vector>* Fc = projectedContactForces();
+    scalarList rhoVb;
+    if (Fc)
+    {
+        rhoVb.setSize(bodies.size());
+        forAll(rhoVb, bi)
+        {
+            rhoVb[bi] = rhoFluid*bodies[bi].shape().volume();
+        }
+    }
+
+    for (const label celli : fb.activeCells())
+    {
+        const label bi = label(id[celli]);
+        if (bi < 0 || !projected(bi)) continue;
+
+        const scalar c =
+            (bodies[bi].rho()/rhoFluid - 1)*alpha[celli]*V[celli]/dt;
+        diag[celli] += c;
+        source[celli] += c*(U0[celli] + dt*g);
+        if (Fc)
+        {
+            source[celli] += alpha[celli]*V[celli]*(*Fc)[bi]/rhoVb[bi];
+        }
+    }
+}
+
+
+bool Foam::fbm::couplingModels::rigidProjection::afterFlow
+(
+    volVectorField& U,
+    List<vector>& force,
+    List<vector>& torque
+)
+{
+    phaseTimes& times = system_.times();
+    {
+        phaseTimes::scope forcesTime(times, phaseTimes::forces);
+        projectionForces(U, force, torque);
+    }
+
+    PtrList<body>& bodies = system_.bodies();
+    forAll(bodies, bi)
+    {
+        bodies[bi].setForce(force[bi], torque[bi]);
+    }
+
+    // The footprint the flow was solved with: the flow there takes the
+    // bodies' new velocities (the cells a body moves into keep their
+    // fluid velocity; the next step accelerates them and charges the
+    // body)
+    const fictitiousBoundary& fb = system_.fb();
+    const labelList cells(fb.activeCells());
+    scalarList alpha(cells.size());
+    labelList id(cells.size());
+    forAll(cells, i)
+    {
+        alpha[i] = fb.alpha()[cells[i]];
+        id[i] = label(fb.bodyID()[cells[i]]);
+    }
+    List<point> centres(bodies.size());
+    forAll(bodies, bi)
+    {
+        centres[bi] = bodies[bi].centre();
+    }
+
+    // The bodies move over the step with these forces (and the contacts)
+    const bool inside = system_.advance();
+    relaxProjectedForce();
+
+    phaseTimes::scope forcingTime(times, phaseTimes::forcing);
+    rigidify(U, cells, alpha, id, centres);
+
+    return inside;
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::readState
+(
+    const dictionary& state
+)
+{
+    // projectContacts: the contact force of the step that led to the
+    // restart time, when the earlier run wrote it (contactForce)
+    const PtrList<body>& bodies = system_.bodies();
+    label nContact = 0;
+    for (const body& b : bodies)
+    {
+        if (state.subDict(b.name()).found("contactForce")) ++nContact;
+    }
+    if (nContact && nContact != bodies.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "contactForce given for " << nContact << " of the "
+            << bodies.size() << " bodies in " << state.name()
+            << nl << "    Give it for every body or for none"
+            << exit(FatalIOError);
+    }
+    if (projectContacts_ && nContact)
+    {
+        restartForce_.setSize(bodies.size());
+        forAll(bodies, bi)
+        {
+            restartForce_[bi] =
+                state.subDict(bodies[bi].name()).get<vector>("contactForce");
+        }
+    }
+}
+
+
+void Foam::fbm::couplingModels::rigidProjection::writeState
+(
+    const label bi,
+    Ostream& os
+) const
+{
+    // The contact force the next flow solve takes, so that a restart
+    // repeats an uninterrupted run
+    const List<vector>* Fc = projectedContactForces();
+    if (Fc)
+    {
+        os.writeEntry("contactForce", (*Fc)[bi]);
+    }
+}
+
+
+// ************************************************************************* //
