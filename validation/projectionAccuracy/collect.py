@@ -13,6 +13,8 @@ Uz wx wy wz) gives
     y_start, y_end     height of the centre at the first and last step
     bodyCo_max         largest body Courant number |U| dt / h (dt the step
                        that ends at the row, U its end velocity)
+    a_first            the first step's acceleration |U_y|/t of the first
+                       row
     cpu_s              fbmFoam's last ExecutionTime
     status             exitStatus of the tutorial's Allrun (0: done)
 Usage: /usr/bin/python3 collect.py
@@ -27,15 +29,17 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # body file, rho_s, diameter, nu, cell size h
 BODIES = {
     "disk": ("particle", 1.5, 0.25, 0.1, 2.0/48),
+    "neutral": ("particle", 1.01, 0.25, 0.1, 2.0/48),
     "sphere": ("sphere", 1.5, 0.1, 0.1, 0.5/40),
 }
 COLUMNS = ["run", "body", "coupling", "maxBodyCo", "deltaT", "cells",
            "steps", "t_end", "max_speed", "t_max", "Re_max", "speed_0.1",
            "speed_0.15", "speed_end", "y_start", "y_end", "bodyCo_max",
-           "cpu_s", "status"]
+           "a_first", "cpu_s", "status"]
 ORDER = ["disk-explicit", "disk-projection", "disk-projection-maxBodyCo0.1",
          "disk-projection-dt2e-4", "sphere-explicit", "sphere-projection",
-         "sphere-projection-maxBodyCo0.1"]
+         "sphere-projection-maxBodyCo0.1", "neutral-L3", "neutral-L4",
+         "neutral-L5"]
 
 
 def lastMatch(path, pattern):
@@ -52,6 +56,11 @@ def collectRun(run):
     name = os.path.basename(run)
     body = name.split("-")[0]
     bodyFile, rho, d, nu, h = BODIES[body]
+    m = re.search(r"^level\s+(\d+);", open(os.path.join(
+        run, "system/caseParameters")).read(), re.M) \
+        if body in ("disk", "neutral") else None
+    if m:
+        h = 2.0/(12*2**(int(m.group(1)) - 1))
     rows = [[float(x) for x in l.split()]
             for l in open(os.path.join(run, "postProcessing/fbmBodies/0",
                                        bodyFile + ".dat"))
@@ -90,6 +99,7 @@ def collectRun(run):
             "speed_0.1": at(0.1), "speed_0.15": at(0.15),
             "speed_end": "%.5g" % speed[-1], "y_start": "%.5g" % rows[0][8],
             "y_end": "%.5g" % rows[-1][8], "bodyCo_max": "%.3g" % co,
+            "a_first": "%.5g" % (abs(rows[0][11])/rows[0][0]),
             "cpu_s": "%.2f" % float(cpu) if cpu else "", "status": status}
 
 
