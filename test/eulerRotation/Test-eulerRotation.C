@@ -29,6 +29,8 @@ Description
       until the body turns over (the tennis-racket flip);
     - the contact model's sub-steps (kick, drift, kick) give the same
       motion as the plain step;
+    - a body frame that is not principal (the eigenvectors of the
+      inertia): the same motion as the principal one;
     - a constant torque about a principal axis: w = T t/I.
 
 \*---------------------------------------------------------------------------*/
@@ -70,6 +72,29 @@ autoPtr<fbm::body> newTop
         )
     );
 }
+
+
+// An ellipsoid whose body frame is not its principal frame: the inertia
+// of the ellipsoid turned by R (its surface is not used here)
+class tiltedEllipsoid
+:
+    public fbm::bodyShapes::ellipsoid
+{
+    const tensor R_;
+
+public:
+
+    tiltedEllipsoid(const vector& e, const tensor& R, const polyMesh& mesh)
+    :
+        fbm::bodyShapes::ellipsoid(e, mesh),
+        R_(R)
+    {}
+
+    virtual symmTensor inertiaPerDensity() const
+    {
+        return symm(R_ & ellipsoid::inertiaPerDensity() & R_.T());
+    }
+};
 
 
 // Body-frame angular momentum, energy
@@ -295,6 +320,56 @@ int main(int argc, char *argv[])
             "sub-steps: angular momentum conserved",
             mag(angularMomentum(bp()) - angularMomentum(ap()))
            /mag(angularMomentum(ap())), 0, 1e-13
+        );
+    }
+
+    // ---- A body frame that is not principal (eigenvectors of I0) ----
+    {
+        // The same body twice: an ellipsoid turned by R at the start, and
+        // one whose body-frame inertia is the turned one (its principal
+        // axes found by the eigen-decomposition); the motions agree
+        const fbm::rigidBodyMotion motion(Zero, 1, 0, mesh);
+        const tensor R(rotation(vector(2, -1, 1)/Foam::sqrt(6.0), 0.9));
+        const vector e(0.2, 0.15, 0.1), w0(1, 2, 3);
+        autoPtr<fbm::body> ap(newTop(e, w0, mesh));
+        {
+            fbm::bodyState s(ap->state());
+            s.setOrientation(R, Zero);
+            autoPtr<fbm::bodyShape> shape
+            (
+                new fbm::bodyShapes::ellipsoid(e, mesh)
+            );
+            ap.reset
+            (
+                new fbm::body("a", std::move(shape), 1000, s, false, true)
+            );
+        }
+        autoPtr<fbm::bodyShape> shape(new tiltedEllipsoid(e, R, mesh));
+        fbm::body b
+        (
+            "b", std::move(shape), 1000,
+            fbm::bodyState(mesh.bounds().centre(), Zero, w0), false, true
+        );
+        fbmTest::check
+        (
+            "tilted: the same lab inertia at the start",
+            mag(ap->inertia() - b.inertia())/mag(b.inertia()), 0, 1e-14
+        );
+        for (label i = 0; i < 1000; ++i)
+        {
+            motion.move(ap(), 2e-3);
+            motion.move(b, 2e-3);
+        }
+        Info<< nl << "Non-principal body frame, 1000 steps" << nl;
+        fbmTest::check
+        (
+            "tilted: the same angular velocity",
+            mag(ap->omega() - b.omega())/mag(w0), 0, 1e-10
+        );
+        fbmTest::check
+        (
+            "tilted: the same orientation (Q_a = Q_b R)",
+            mag(ap->state().Q() - (b.state().Q() & R)), 0, 1e-10
         );
     }
 
