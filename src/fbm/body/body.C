@@ -101,7 +101,9 @@ Foam::fbm::body::body
     omega0_(Zero),
     aHeld_(Zero),
     omegaDotHeld_(Zero)
-{}
+{
+    shape_->setOrientation(state_.Q());
+}
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
@@ -151,7 +153,7 @@ void Foam::fbm::body::setMotion
 
 Foam::symmTensor Foam::fbm::body::inertia() const
 {
-    // Q I0 Q^T; circles and spheres are axisymmetric, so this is I0
+    // Q I0 Q^T (for circles and spheres I0 up to round-off)
     const tensor& Q = state_.Q();
     return symm(Q & (rho_*shape_->inertiaPerDensity()) & Q.T());
 }
@@ -230,6 +232,9 @@ void Foam::fbm::body::updateCells
     const label nSubdivision
 )
 {
+    // The shape in the current orientation
+    shape_->setOrientation(state_.Q());
+
     // Candidate cells: those whose bounding box meets the body's
     const point& X = centre();
     const vector h(shape_->halfExtent());

@@ -225,6 +225,33 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
         }
     }
 
+    // Initial orientation (optional): a rotation tensor, body frame to
+    // lab frame; in 2D a rotation about the empty direction
+    const bool oriented = dict.found("orientation");
+    const tensor Q0(dict.getOrDefault<tensor>("orientation", tensor::I));
+    if (oriented)
+    {
+        if (mag((Q0.T() & Q0) - tensor::I) > 1e-6 || det(Q0) <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << name << ": orientation " << Q0 << " is not a"
+                << " rotation tensor (orthogonal with determinant +1, to"
+                << " 1e-6)" << exit(FatalIOError);
+        }
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            vector e(Zero);
+            e[d] = 1;
+            if (sd[d] < 0 && mag((Q0 & e) - e) > 1e-6)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Body " << name << ": orientation " << Q0 << " must"
+                    << " be a rotation about the empty direction of this 2D"
+                    << " mesh" << exit(FatalIOError);
+            }
+        }
+    }
+
     // The centre must lie in the mesh (on some processor). The cell test
     // uses the mesh's tet decomposition, which is built collectively: build
     // it on every processor first, not only where the centre has candidate
@@ -239,13 +266,14 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
             << exit(FatalIOError);
     }
 
+    bodyState state(centre, U, omega);
+    if (oriented)
+    {
+        state.setOrientation(Q0, Zero);
+    }
     autoPtr<body> b
     (
-        new body
-        (
-            name, std::move(shape), rho, bodyState(centre, U, omega),
-            translate, rotate
-        )
+        new body(name, std::move(shape), rho, state, translate, rotate)
     );
     if (motion.valid())
     {

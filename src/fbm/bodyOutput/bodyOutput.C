@@ -18,6 +18,7 @@ License
 #include "IOdictionary.H"
 #include "passiveParticleCloud.H"
 #include "IOPosition.H"
+#include "quaternion.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -156,7 +157,15 @@ void Foam::fbm::bodyOutput::createFiles(const wordList& modelNames)
         {
             os  << " Cd Cl";
         }
-        os  << " x y z Ux Uy Uz wx wy wz" << endl;
+        os  << " x y z Ux Uy Uz wx wy wz";
+        if (!b.shape().isotropic())
+        {
+            // Orientation: the accumulated rotation angle about the empty
+            // direction (2D), the unit quaternion of Q (3D)
+            os  << (system_.mesh().nSolutionD() == 2
+                    ? " angle" : " qw qx qy qz");
+        }
+        os  << endl;
     }
 }
 
@@ -183,7 +192,26 @@ void Foam::fbm::bodyOutput::writeLine
     const vector& w = b.omega();
     os  << ' ' << X.x() << ' ' << X.y() << ' ' << X.z()
         << ' ' << V.x() << ' ' << V.y() << ' ' << V.z()
-        << ' ' << w.x() << ' ' << w.y() << ' ' << w.z() << endl;
+        << ' ' << w.x() << ' ' << w.y() << ' ' << w.z();
+    if (!b.shape().isotropic())
+    {
+        const Vector<label>& sd = system_.mesh().solutionD();
+        if (system_.mesh().nSolutionD() == 2)
+        {
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                if (sd[d] < 0) os << ' ' << b.state().theta()[d];
+            }
+        }
+        else
+        {
+            quaternion q(b.state().Q());
+            if (q.w() < 0) q = -q;
+            os  << ' ' << q.w() << ' ' << q.v().x() << ' ' << q.v().y()
+                << ' ' << q.v().z();
+        }
+    }
+    os  << endl;
 }
 
 
@@ -291,6 +319,29 @@ void Foam::fbm::bodyOutput::writeCloud() const
         )
     );
     write(IOField<vector>(cloud.fieldIOobject("F", IOobject::NO_READ), F));
+
+    // The orientation Q (body frame to lab frame), when some body's shape
+    // is not isotropic (the clouds of circles and spheres are unchanged)
+    bool oriented = false;
+    for (const body& b : bodies)
+    {
+        oriented = oriented || !b.shape().isotropic();
+    }
+    if (oriented)
+    {
+        tensorField Q(n);
+        forAll(mine, i)
+        {
+            Q[i] = bodies[mine[i]].state().Q();
+        }
+        write
+        (
+            IOField<tensor>
+            (
+                cloud.fieldIOobject("orientation", IOobject::NO_READ), Q
+            )
+        );
+    }
 
     // For foamToVTK: the cloud's geometry is the positions file
     IOdictionary props

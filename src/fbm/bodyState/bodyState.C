@@ -52,6 +52,17 @@ void Foam::fbm::bodyState::rotate(const vector& phi)
 }
 
 
+void Foam::fbm::bodyState::setOrientation
+(
+    const tensor& Q,
+    const vector& dTheta
+)
+{
+    Q_ = 0.5*(Q & (3*tensor::I - (Q.T() & Q)));
+    theta_ += dTheta;
+}
+
+
 void Foam::fbm::bodyState::read(const dictionary& dict)
 {
     centre_ = dict.get<point>("centre");

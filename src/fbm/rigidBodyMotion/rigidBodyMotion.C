@@ -89,6 +89,111 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
 }
 
 
+bool Foam::fbm::rigidBodyMotion::splitRotation(const body& b) const
+{
+    return b.rotates() && !b.shape().isotropic() && cmptMin(planeMask_) > 0;
+}
+
+
+Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
+(
+    const body& b,
+    const vector& omegaDotLag
+) const
+{
+    // (1 + c) dL/dt = T + c (I omegaDot^n + omega x I omega), c = C_a
+    // rho_f/rho_s: the virtual-mass form of angularAcceleration() with
+    // d(I omega)/dt = I omegaDot + omega x I omega
+    const symmTensor I(b.inertia());
+    const vector& omega = b.omega();
+    const scalar c = addedMassCoeff_*rhoFluid_/b.rho();
+    if (c == 0)
+    {
+        return b.torque();
+    }
+    return
+        (b.torque() + c*((I & omegaDotLag) + (omega ^ (I & omega))))
+       /(1 + c);
+}
+
+
+void Foam::fbm::rigidBodyMotion::angularKick
+(
+    body& b,
+    const scalar dt,
+    const vector& T
+) const
+{
+    // L = I omega += dt T at a fixed orientation
+    bodyState& s = b.state();
+    const symmTensor I(b.inertia());
+    s.omega() = inv(I) & ((I & s.omega()) + dt*T);
+}
+
+
+void Foam::fbm::rigidBodyMotion::freeRotation(body& b, const scalar dt) const
+{
+    bodyState& s = b.state();
+
+    // Principal axes of the body-frame inertia: I0 = E diag(lambda) E^T
+    const symmTensor I0(b.rho()*b.shape().inertiaPerDensity());
+    vector lambda(I0.xx(), I0.yy(), I0.zz());
+    tensor E(tensor::I);
+    if (I0.xy() != 0 || I0.xz() != 0 || I0.yz() != 0)
+    {
+        lambda = eigenValues(I0);
+        E = eigenVectors(I0, lambda).T();
+        if (det(E) < 0)
+        {
+            E.xz() = -E.xz();
+            E.yz() = -E.yz();
+            E.zz() = -E.zz();
+        }
+    }
+
+    // Principal frame to lab, and the angular momentum in the principal
+    // frame pi = P^T L = diag(lambda) P^T omega
+    tensor P(s.Q() & E);
+    vector pi(cmptMultiply(lambda, P.T() & s.omega()));
+    const vector omega0(s.omega());
+
+    // Exact flows of the three parts pi_k^2/(2 lambda_k) of the kinetic
+    // energy: a rotation about principal axis k by theta = h pi_k/lambda_k,
+    // body frame P <- P R_k(theta), pi <- R_k(theta)^T pi (L = P pi fixed).
+    // Symmetric sequence 1 2 3 2 1 (Dullweber, Leimkuhler & McLachlan 1997)
+    static const direction axis[5] = {0, 1, 2, 1, 0};
+    static const scalar frac[5] = {0.5, 0.5, 1, 0.5, 0.5};
+    for (label i = 0; i < 5; ++i)
+    {
+        const direction k = axis[i];
+        const scalar theta = frac[i]*dt*pi[k]/lambda[k];
+        const scalar c = Foam::cos(theta), sn = Foam::sin(theta);
+        const direction p = (k + 1) % 3, q = (k + 2) % 3;
+        tensor R(tensor::I);
+        R(p, p) = c;
+        R(p, q) = -sn;
+        R(q, p) = sn;
+        R(q, q) = c;
+        P = P & R;
+        pi = R.T() & pi;
+    }
+
+    s.omega() = P & vector(cmptDivide(pi, lambda));
+    s.setOrientation(P & E.T(), 0.5*dt*(omega0 + s.omega()));
+}
+
+
+void Foam::fbm::rigidBodyMotion::rotate(body& b, const vector& phi) const
+{
+    bodyState& s = b.state();
+    s.rotate(phi);
+    if (!b.shape().isotropic())
+    {
+        s.setOrientation(s.Q(), Zero);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::fbm::rigidBodyMotion::move(body& b, const scalar dt) const
@@ -117,7 +222,17 @@ void Foam::fbm::rigidBodyMotion::move(body& b, const scalar dt) const
         s.centre() += dt*s.U();
     }
 
-    if (b.rotates())
+    if (splitRotation(b))
+    {
+        // Half kick, free rotation, half kick with the held torque
+        const vector w0(s.omega());
+        const vector T(splitTorque(b, s.angularAcceleration()));
+        angularKick(b, 0.5*dt, T);
+        freeRotation(b, dt);
+        angularKick(b, 0.5*dt, T);
+        s.angularAcceleration() = (s.omega() - w0)/dt;
+    }
+    else if (b.rotates())
     {
         const vector wDot(angularAcceleration(b, s.angularAcceleration()));
         const vector w0(s.omega());
@@ -125,11 +240,11 @@ void Foam::fbm::rigidBodyMotion::move(body& b, const scalar dt) const
         s.angularAcceleration() = wDot;
 
         // Rotate the orientation by the mean angular velocity of the step
-        s.rotate(0.5*dt*(w0 + s.omega()));
+        rotate(b, 0.5*dt*(w0 + s.omega()));
     }
     else
     {
-        s.rotate(dt*s.omega());
+        rotate(b, dt*s.omega());
     }
 }
 
@@ -161,7 +276,11 @@ void Foam::fbm::rigidBodyMotion::kick
         heldTranslation(b, Fheld, Flag, Meff);
         s.U() += dt*acceleration(Fheld, Fc, Flag, Meff, planeMask_);
     }
-    if (b.rotates())
+    if (splitRotation(b))
+    {
+        angularKick(b, dt, splitTorque(b, b.omegaDotHeld()));
+    }
+    else if (b.rotates())
     {
         s.omega() += dt*angularAcceleration(b, b.omegaDotHeld());
     }
@@ -173,7 +292,14 @@ void Foam::fbm::rigidBodyMotion::drift(body& b, const scalar dt) const
     // Integrated or prescribed (held) velocities alike
     bodyState& s = b.state();
     s.centre() += dt*s.U();
-    s.rotate(dt*s.omega());
+    if (splitRotation(b))
+    {
+        freeRotation(b, dt);
+    }
+    else
+    {
+        rotate(b, dt*s.omega());
+    }
 }
 
 
@@ -196,13 +322,23 @@ void Foam::fbm::rigidBodyMotion::endTranslationSubCycles
         return;
     }
     const scalar h = 0.5*dtSub;
+    if (splitRotation(b))
+    {
+        for (label step = 0; step < n; ++step)
+        {
+            angularKick(b, h, splitTorque(b, b.omegaDotHeld()));
+            freeRotation(b, dtSub);
+            angularKick(b, h, splitTorque(b, b.omegaDotHeld()));
+        }
+        return;
+    }
     for (label step = 0; step < n; ++step)
     {
         if (b.rotates())
         {
             s.omega() += h*angularAcceleration(b, b.omegaDotHeld());
         }
-        s.rotate(dtSub*s.omega());
+        rotate(b, dtSub*s.omega());
         if (b.rotates())
         {
             s.omega() += h*angularAcceleration(b, b.omegaDotHeld());

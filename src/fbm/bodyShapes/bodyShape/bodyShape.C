@@ -30,13 +30,62 @@ namespace fbm
 Foam::fbm::bodyShape::bodyShape(const polyMesh& mesh)
 :
     solutionD_(mesh.solutionD()),
-    depth_(1)
+    depth_(1),
+    Q_(tensor::I)
 {
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (solutionD_[d] < 0)
         {
             depth_ = mesh.bounds().span()[d];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::vector Foam::fbm::bodyShape::rotatedHalfExtent(const vector& e) const
+{
+    // The support of the ellipsoid in direction d: |diag(e) Q^T e_d|
+    vector h(Zero);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        scalar s = 0;
+        for (direction k = 0; k < vector::nComponents; ++k)
+        {
+            s += sqr(Q_(d, k)*e[k]);
+        }
+        h[d] = Foam::sqrt(s);
+    }
+    return h;
+}
+
+
+void Foam::fbm::bodyShape::checkDimension
+(
+    const polyMesh& mesh,
+    const dictionary& dict,
+    const label nDim,
+    FixedList<direction, 2>& axes
+) const
+{
+    if (mesh.nSolutionD() != nDim)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body shape " << dict.get<word>("type") << " (body "
+            << dict.dictName() << ") needs a " << nDim << "D mesh"
+            << (nDim == 2 ? " (one cell thick, empty front and back)" : "")
+            << ", this mesh has " << mesh.nSolutionD()
+            << " solution directions" << exit(FatalIOError);
+    }
+    axes = direction(0);
+    label n = 0;
+    for (direction d = 0; d < vector::nComponents && n < 2; ++d)
+    {
+        if (solutionD_[d] >= 0)
+        {
+            axes[n++] = d;
         }
     }
 }

@@ -50,6 +50,29 @@ Foam::scalar Foam::fbm::particleCollisions::meshSize(const fvMesh& mesh)
 }
 
 
+const Foam::dictionary& Foam::fbm::particleCollisions::checkShapes
+(
+    const dictionary& dict,
+    const PtrList<body>& bodies
+)
+{
+    // The contact law acts between bounding circles and spheres: not for
+    // shapes whose surface is elsewhere
+    for (const body& b : bodies)
+    {
+        if (!b.shape().isotropic())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << b.name() << ": collisions of the shape "
+                << b.shape().type() << " are not implemented yet (the"
+                << " contact model acts between circles and spheres only);"
+                << " remove the collisions dictionary" << exit(FatalIOError);
+        }
+    }
+    return dict;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::particleCollisions::particleCollisions
@@ -59,7 +82,7 @@ Foam::fbm::particleCollisions::particleCollisions
     const PtrList<body>& bodies
 )
 :
-    dict_(dict),
+    dict_(checkShapes(dict, bodies)),
     h_(meshSize(mesh)),
     depth_(forceScale(mesh)),
     model_(contactModel::New(dict, h_)),
