@@ -91,7 +91,7 @@ for r in runs:
     Cd, Ci = morison(t[m], F[m])
     smooth, amp1 = fourier(t[m], F[m], 9)
     noise = 100*math.sqrt(np.mean((F[m] - smooth)**2))/amp1
-    row = dict(run=r, method=r.split("-")[0], level=int(r[-1]), cells=n,
+    row = dict(run=r, method=r.split("-")[0] + ("-dt2" if r.endswith("-dt2") else ""), level=int(r.split("-L")[1][0]), cells=n,
                steps=int((t <= t1 + 1e-9).sum()), cpu_s=cpu, amplitude=amp, amplitude1=amp1,
                noise_pct=noise, Cd=Cd, Ci=Ci)
     if ref:
@@ -150,7 +150,7 @@ fig.savefig("force.png", dpi=110)
 
 if ref:
     fig, ax = plt.subplots(figsize=(5, 4))
-    for method, mk in (("fbm", "o-"), ("bodyFitted", "s-")):
+    for method, mk in (("fbm", "o-"), ("fbm-dt2", "^"), ("bodyFitted", "s-")):
         rr = [row for row in rows if row["method"] == method and row["run"] != ref]
         if rr:
             ax.loglog([row["cpu_s"] for row in rr],
