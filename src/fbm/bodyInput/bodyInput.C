@@ -63,7 +63,11 @@ void Foam::fbm::bodyInput::readParticleList
         count = tok.labelToken();
         next(tok);
     }
-    if (!tok.good() || !tok.isPunctuation() || tok.pToken() != token::BEGIN_LIST)
+    if
+    (
+        !tok.good() || !tok.isPunctuation()
+     || tok.pToken() != token::BEGIN_LIST
+    )
     {
         OSstream& msg = FatalIOErrorInFunction(listDict);
         msg << "Keyword particles of " << listName << ": expected a list"

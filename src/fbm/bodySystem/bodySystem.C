@@ -166,13 +166,23 @@ void Foam::fbm::bodySystem::checkSpeed(const body& b) const
 
 void Foam::fbm::bodySystem::checkRunaway(const label bi)
 {
+    // Only a body lighter than about the fluid it displaces can be
+    // outweighed by its lagged added mass (rhoFluid V for a circle, half
+    // that for a sphere): the same bodies the explicit coupling warns about
     const body& b = bodies_[bi];
+    if (b.rho() >= 1.2*rhoFluid_)
+    {
+        return;
+    }
+
     const scalar R = b.shape().radius();
     const bodyState& s = b.state();
     const Pair<vector> acc(s.acceleration(), R*s.angularAcceleration());
     const Pair<vector>& old = lastAcceleration_[bi];
-    const scalar magAcc = Foam::sqrt(magSqr(acc.first()) + magSqr(acc.second()));
-    const scalar magOld = Foam::sqrt(magSqr(old.first()) + magSqr(old.second()));
+    const scalar magAcc =
+        Foam::sqrt(magSqr(acc.first()) + magSqr(acc.second()));
+    const scalar magOld =
+        Foam::sqrt(magSqr(old.first()) + magSqr(old.second()));
     const bool reversed =
         (acc.first() & old.first()) + (acc.second() & old.second()) < 0;
 

@@ -148,7 +148,11 @@ void Foam::fbm::bodySystem::readState()
     }
     for (const entry& e : state)
     {
-        if (e.isDict() && e.keyword() != "FoamFile" && !names.found(e.keyword()))
+        if
+        (
+            e.isDict() && e.keyword() != "FoamFile"
+         && !names.found(e.keyword())
+        )
         {
             WarningInFunction
                 << "The restart state " << stateFile << " has body "
