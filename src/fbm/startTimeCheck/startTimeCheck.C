@@ -51,6 +51,10 @@ bool Foam::fbm::startTimeCheck::endsComplete(const fileName& file)
     is.clear();
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
+    if (size <= 0)
+    {
+        return false;
+    }
     const std::streamoff n = std::min<std::streamoff>(size, 200);
     std::string tail(n, '\0');
     is.seekg(size - n);
