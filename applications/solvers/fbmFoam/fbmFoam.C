@@ -27,7 +27,9 @@ Description
     before the pressure equation uses it; after the PIMPLE loop their
     hydrodynamic forces and torques are computed (volume integral
     -int sigma . grad(alpha) dV or momentum exchange) and written.
-    See src/fbm/bodySystem/bodySystem.H and src/README.md.
+    See src/fbm/bodySystem/bodySystem.H and src/README.md. A continued
+    run first checks that its start time is complete (a run killed while
+    writing leaves it incomplete): fbm::startTimeCheck.
 
     \heading Required fields
     \plaintable
@@ -49,6 +51,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "bodySystem.H"
+#include "startTimeCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -65,6 +68,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    fbm::startTimeCheck::check(runTime);
     #include "createMesh.H"
     #include "initContinuityErrs.H"
     #include "createControl.H"

@@ -35,17 +35,56 @@ void Foam::fbm::bodyInput::readParticleList
 
     // particles ( (x y z) radius [rho]  ... ); an optional count in front
     ITstream& is = listDict.lookup("particles");
-    token tok(is);
+    // The next token (one looked at and kept first), or an undefined one
+    // at the end: never a read beyond the end of the entry
+    token kept;
+    auto next = [&is, &kept](token& t)
+    {
+        if (kept.good())
+        {
+            t = kept;
+            kept.reset();
+        }
+        else if (is.eof())
+        {
+            t.reset();
+        }
+        else
+        {
+            is >> t;
+        }
+    };
+
+    token tok;
+    next(tok);
+    label count = -1;
     if (tok.isLabel())
     {
-        is >> tok;
+        count = tok.labelToken();
+        next(tok);
     }
-    if (!tok.isPunctuation() || tok.pToken() != token::BEGIN_LIST)
+    if
+    (
+        !tok.good() || !tok.isPunctuation()
+     || tok.pToken() != token::BEGIN_LIST
+    )
     {
-        FatalIOErrorInFunction(listDict)
-            << "Keyword particles of " << listName << ": expected a list"
-            << " ( (x y z) radius [rho] ... ), found " << tok.info()
-            << exit(FatalIOError);
+        OSstream& msg = FatalIOErrorInFunction(listDict);
+        msg << "Keyword particles of " << listName << ": expected a list"
+            << " ( (x y z) radius [rho] ... ), found ";
+        if (tok.good())
+        {
+            msg << tok.info();
+        }
+        else
+        {
+            msg << "nothing";
+        }
+        if (count >= 0)
+        {
+            msg << " after the count " << count;
+        }
+        msg << exit(FatalIOError);
     }
 
     DynamicList<point> X;
@@ -53,7 +92,7 @@ void Foam::fbm::bodyInput::readParticleList
     DynamicList<scalar> rhos;
     while (true)
     {
-        is >> tok;
+        next(tok);
         if (!tok.good() || is.bad())
         {
             FatalIOErrorInFunction(listDict)
@@ -65,17 +104,32 @@ void Foam::fbm::bodyInput::readParticleList
         {
             break;
         }
+        if (!tok.isPunctuation() || tok.pToken() != token::BEGIN_LIST)
+        {
+            OSstream& msg = FatalIOErrorInFunction(listDict);
+            msg << "Keyword particles of " << listName << ", particle "
+                << X.size() << ": expected its centre (x y z), found "
+                << tok.info() << nl;
+            if (X.size())
+            {
+                msg << "    An extra column after particle " << X.size() - 1
+                    << " (centre " << X.last() << ", radius " << R.last()
+                    << ", density " << rhos.last() << ")?";
+            }
+            msg << " Each particle is (x y z) radius [rho]"
+                << exit(FatalIOError);
+        }
         is.putBack(tok);
 
         point x;
         scalar r = -1;
         is >> x;
-        is >> tok;
+        next(tok);
         if (tok.isNumber())
         {
             r = tok.number();
+            next(tok);
         }
-        is >> tok;
         scalar rhoi = rhoShared;
         if (tok.isNumber())
         {
@@ -83,7 +137,7 @@ void Foam::fbm::bodyInput::readParticleList
         }
         else
         {
-            is.putBack(tok);
+            kept = tok;
         }
         is.check(FUNCTION_NAME);
 
@@ -165,7 +219,7 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
 {
     autoPtr<bodyShape> shape(bodyShape::New(dict, mesh));
     const scalar rho =
-        dict.getCheck<scalar>("rho", [](scalar r){ return r > 0; });
+        dict.getCheck<scalar>("rho", [](scalar r){ return r >= 0; });
     const point centre0(midPlane(mesh, dict.get<point>("centre")));
     const vector omega(dict.get<vector>("omega"));
     const bool translate = dict.get<bool>("translate");

@@ -14,6 +14,10 @@ License
 #include "dictionary.H"
 #include "Ostream.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::fbm::bodyState::maxEntry = 1e100;
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::bodyState::bodyState
@@ -63,17 +67,50 @@ void Foam::fbm::bodyState::setOrientation
 }
 
 
+template<class Type>
+Type Foam::fbm::bodyState::readEntry
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const Type value(dict.get<Type>(key));
+    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
+    {
+        const scalar x = component(value, d);
+        if (!std::isfinite(x) || mag(x) > maxEntry)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' " << value << " of the restart"
+                << " state " << dict.name() << ": component " << x
+                << " is out of range (a state entry lies within +-"
+                << maxEntry << ")" << exit(FatalIOError);
+        }
+    }
+    return value;
+}
+
+
 void Foam::fbm::bodyState::read(const dictionary& dict)
 {
-    centre_ = dict.get<point>("centre");
-    U_ = dict.get<vector>("U");
-    omega_ = dict.get<vector>("omega");
-    Q_ = dict.get<tensor>("Q");
-    theta_ = dict.get<vector>("theta");
-    a_ = dict.get<vector>("acceleration");
-    omegaDot_ = dict.get<vector>("angularAcceleration");
-    force_ = dict.get<vector>("force");
-    torque_ = dict.get<vector>("torque");
+    centre_ = readEntry<point>(dict, "centre");
+    U_ = readEntry<vector>(dict, "U");
+    omega_ = readEntry<vector>(dict, "omega");
+    Q_ = readEntry<tensor>(dict, "Q");
+    theta_ = readEntry<vector>(dict, "theta");
+    a_ = readEntry<vector>(dict, "acceleration");
+    omegaDot_ = readEntry<vector>(dict, "angularAcceleration");
+    force_ = readEntry<vector>(dict, "force");
+    torque_ = readEntry<vector>(dict, "torque");
+
+    // The orientation is a rotation
+    if (mag((Q_ & Q_.T()) - tensor::I) > 1e-6 || det(Q_) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'Q' " << Q_ << " of the restart state " << dict.name()
+            << " is not a rotation (Q Q^T = I, det Q = 1)"
+            << exit(FatalIOError);
+    }
 }
 
 

@@ -83,12 +83,17 @@ void Foam::fbm::bodySystem::checkCoveredVolumes() const
 
         if (err > tol)
         {
-            FatalIOErrorInFunction(*this)
-                << "Body " << b.name() << " (centre " << b.centre()
+            OSstream& msg = FatalIOErrorInFunction(*this);
+            msg << "Body " << b.name() << " (centre " << b.centre()
                 << ") is not wholly inside the mesh: covered volume "
                 << vol[bi] << " against " << Vb << " for the shape"
-                << " (tolerance " << tol << " relative)"
-                << exit(FatalIOError);
+                << " (tolerance " << tol << " relative)";
+            if (!stateFile_.empty())
+            {
+                msg << nl << "    The centre is that of the restart state "
+                    << stateFile_;
+            }
+            msg << exit(FatalIOError);
         }
     }
     if (bodies_.size())
@@ -100,20 +105,111 @@ void Foam::fbm::bodySystem::checkCoveredVolumes() const
 }
 
 
+void Foam::fbm::bodySystem::checkDensities
+(
+    const List<const dictionary*>& sources
+) const
+{
+    // Density ratios from 1e-6 (a gas bubble in a liquid is 1e-3) to 1e6
+    // (tungsten in air is 2e4): beyond, the mass or the acceleration of a
+    // body is round-off against the fluid's
+    forAll(bodies_, bi)
+    {
+        const body& b = bodies_[bi];
+        const scalar ratio = b.rho()/rhoFluid_;
+        if (!(ratio >= 1e-6 && ratio <= 1e6))
+        {
+            FatalIOErrorInFunction(*sources[bi])
+                << "Body " << b.name() << ": rho " << b.rho() << " in "
+                << sources[bi]->name() << " is " << ratio << " times rhoFluid "
+                << rhoFluid_ << " of " << objectPath() << nl
+                << "    The density ratio rho/rhoFluid lies between 1e-6 and"
+                << " 1e6 (magnitudes below 1e-300 are read as 0)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 void Foam::fbm::bodySystem::checkSpeed(const body& b) const
 {
-    const scalar speed = b.maxSpeed();
-    if (!std::isfinite(speed) || speed > maxSpeed_)
+    // Bound the components first: |U| of a runaway body may overflow
+    const scalar R = b.shape().radius();
+    const scalar cmptU = cmptMax(cmptMag(b.U()));
+    const scalar cmptOmega = cmptMax(cmptMag(b.omega()));
+    const bool bounded =
+        std::isfinite(cmptU) && std::isfinite(cmptOmega)
+     && cmptU <= maxSpeed_ && cmptOmega <= maxSpeed_/R;
+    const scalar speed = bounded ? b.maxSpeed() : GREAT;
+    if (!bounded || speed > maxSpeed_)
     {
-        FatalErrorInFunction
-            << "Body " << b.name() << " at time "
-            << mesh_.time().timeName() << ": speed " << speed
-            << " (U " << b.U() << ", omega " << b.omega()
+        OSstream& msg = FatalErrorInFunction;
+        msg << "Body " << b.name() << " at time "
+            << mesh_.time().timeName() << ": speed ";
+        if (bounded)
+        {
+            msg << speed;
+        }
+        else
+        {
+            msg << "out of range";
+        }
+        msg << " (U " << b.U() << ", omega " << b.omega()
             << ") is not finite or exceeds maxSpeed " << maxSpeed_
             << " of " << objectPath() << nl
             << "    The run stops; the last written time is the last"
             << " good state. Reduce the time step or set addedMassCoeff."
             << exit(FatalError);
+    }
+}
+
+
+void Foam::fbm::bodySystem::checkRunaway(const label bi)
+{
+    // Only a body lighter than about the fluid it displaces can be
+    // outweighed by its lagged added mass (rhoFluid V for a circle, half
+    // that for a sphere): the same bodies the explicit coupling warns about
+    const body& b = bodies_[bi];
+    if (b.rho() >= 1.2*rhoFluid_)
+    {
+        return;
+    }
+
+    const scalar R = b.shape().radius();
+    const bodyState& s = b.state();
+    const Pair<vector> acc(s.acceleration(), R*s.angularAcceleration());
+    const Pair<vector>& old = lastAcceleration_[bi];
+    const scalar magAcc =
+        Foam::sqrt(magSqr(acc.first()) + magSqr(acc.second()));
+    const scalar magOld =
+        Foam::sqrt(magSqr(old.first()) + magSqr(old.second()));
+    const bool reversed =
+        (acc.first() & old.first()) + (acc.second() & old.second()) < 0;
+
+    // Significant: a tenth of gravity, or without gravity a velocity
+    // change of 1e-6 maxSpeed in the step
+    const scalar g = mag(motion_->g());
+    const scalar aMin =
+        g > 0 ? 0.1*g : 1e-6*maxSpeed_/mesh_.time().deltaTValue();
+
+    nGrowing_[bi] =
+        (reversed && magAcc > magOld && magAcc > aMin) ? nGrowing_[bi] + 1 : 0;
+    lastAcceleration_[bi] = acc;
+
+    const label nRunawaySteps = 4;
+    if (nGrowing_[bi] >= nRunawaySteps)
+    {
+        FatalErrorInFunction
+            << "Body " << b.name() << " at time "
+            << mesh_.time().timeName() << " runs away: its acceleration "
+            << acc.first() << " (R omegaDot " << acc.second() << ") has"
+            << " reversed and grown in each of the last " << nRunawaySteps
+            << " steps (U " << b.U() << ", omega " << b.omega() << ")" << nl
+            << "    The coupling is unstable for this body (density ratio "
+            << b.rho()/rhoFluid_ << "): the run stops; the last written"
+            << " time is the last good state. Set addedMassCoeff (0.5 to 1)"
+            << " or coupling rigidProjection in " << objectPath()
+            << ", or reduce the time step." << exit(FatalError);
     }
 }
 
@@ -154,10 +250,13 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
     motion_(),
     collisions_(),
     output_(),
-    times_()
+    times_(),
+    lastAcceleration_(),
+    nGrowing_()
 {
     List<const dictionary*> sources;
     bodyInput::read(*this, mesh, fb_.cellTree(), bodies_, sources);
+    checkDensities(sources);
 
     coupling_ = couplingModel::New(*this, *this);
 
@@ -173,6 +272,18 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
             readGravity(), rhoFluid_, coupling_->addedMassCoeff(), mesh
         )
     );
+
+    lastAcceleration_.setSize(bodies_.size());
+    nGrowing_.setSize(bodies_.size(), 0);
+    forAll(bodies_, bi)
+    {
+        const body& b = bodies_[bi];
+        lastAcceleration_[bi] = Pair<vector>
+        (
+            b.state().acceleration(),
+            b.shape().radius()*b.state().angularAcceleration()
+        );
+    }
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
         << ", forcing "
@@ -301,8 +412,9 @@ bool Foam::fbm::bodySystem::advance()
         {
             collisions_->move(bodies_, *motion_, dt);
         }
-        for (body& b : bodies_)
+        forAll(bodies_, bi)
         {
+            body& b = bodies_[bi];
             if (!b.moves()) continue;
 
             if (!collisions_.valid())
@@ -311,6 +423,7 @@ bool Foam::fbm::bodySystem::advance()
             }
             moved = true;
             checkSpeed(b);
+            checkRunaway(bi);
         }
     }
 

@@ -91,6 +91,29 @@ void Foam::fbm::bodyShape::checkDimension
 }
 
 
+Foam::scalar Foam::fbm::bodyShape::readLength
+(
+    const dictionary& dict,
+    const word& key,
+    const polyMesh& mesh
+)
+{
+    // (OpenFOAM reads magnitudes below 1e-300 as 0)
+    const scalar L = dict.getCheck<scalar>(key, [](scalar r){ return r >= 0; });
+    const scalar d = mag(mesh.bounds().span());
+    if (!(L <= d && L >= 1e-6*d))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' " << L << " in " << dict.name()
+            << " is out of range for this mesh: a body's " << key
+            << " lies between 1e-6 d and d, d = " << d << " the diagonal"
+            << " of the mesh's bounding box (magnitudes below 1e-300 are"
+            << " read as 0)" << exit(FatalIOError);
+    }
+    return L;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::fbm::bodyShape::sampleFraction

@@ -39,7 +39,7 @@ Foam::fbm::bodyShapes::circle::circle
 )
 :
     bodyShape(mesh),
-    radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; })),
+    radius_(readLength(dict, "radius", mesh)),
     axes_(direction(0))
 {
     setAxes(mesh, &dict);

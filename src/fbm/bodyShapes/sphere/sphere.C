@@ -39,7 +39,7 @@ Foam::fbm::bodyShapes::sphere::sphere
 )
 :
     bodyShape(mesh),
-    radius_(dict.getCheck<scalar>("radius", [](scalar r){ return r > 0; }))
+    radius_(readLength(dict, "radius", mesh))
 {
     checkMesh(mesh, &dict);
 }
