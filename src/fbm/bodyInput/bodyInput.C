@@ -14,6 +14,7 @@ License
 #include "fvMesh.H"
 #include "HashSet.H"
 #include "ITstream.H"
+#include "IFstream.H"
 #include "indexedOctree.H"
 #include "treeDataCell.H"
 #include "circle.H"
@@ -101,9 +102,80 @@ void Foam::fbm::bodyInput::readParticleList
         rhos.append(rhoi);
     }
 
+    if (X.empty())
+    {
+        FatalIOErrorInFunction(listDict)
+            << "Keyword particles of " << listName << ": the list is empty"
+            << " (a list needs at least one particle)" << exit(FatalIOError);
+    }
+
     centres.transfer(X);
     radii.transfer(R);
     rho.transfer(rhos);
+}
+
+
+void Foam::fbm::bodyInput::checkDuplicates(const dictionary& fbmDict)
+{
+    // A dictionary merges entries of the same name (two bodies of one name
+    // would become one with mixed keywords): read the file again with
+    // duplicates an error, and name both
+    const entry::inputMode oldMode = entry::globalInputMode;
+    const bool oldThrow = FatalIOError.throwExceptions();
+    entry::globalInputMode = entry::inputMode::ERROR;
+
+    string message;
+    label line = -1;
+    try
+    {
+        IFstream is(fbmDict.name());
+        dictionary d(is);
+    }
+    catch (const IOerror& err)
+    {
+        message = err.message();
+        line = err.ioStartLineNumber();
+    }
+    entry::globalInputMode = oldMode;
+    FatalIOError.throwExceptions(oldThrow);
+
+    if (line < 0 && message.empty())
+    {
+        return;
+    }
+
+    // "duplicate entry: NAME" (any other read error was reported by the
+    // first read already)
+    const std::string::size_type pos = message.find("duplicate entry: ");
+    if (pos == std::string::npos)
+    {
+        return;
+    }
+    const word key(message.substr(pos + 17).c_str());
+
+    // Where the first one is, if it is a body
+    label firstLine = -1;
+    for (const word container : {"bodies", "particleLists"})
+    {
+        const dictionary* dictPtr = fbmDict.findDict(container);
+        if (dictPtr && dictPtr->isDict(key))
+        {
+            firstLine = dictPtr->subDict(key).startLineNumber();
+        }
+    }
+
+    if (firstLine >= 0)
+    {
+        FatalIOErrorInFunction(fbmDict)
+            << "Body " << key << " is defined twice in " << fbmDict.name()
+            << ": at lines " << firstLine << " and " << line
+            << " (a dictionary would merge the two into one body);"
+            << " give each body its own name" << exit(FatalIOError);
+    }
+    FatalIOErrorInFunction(fbmDict)
+        << "Entry " << key << " is defined twice in " << fbmDict.name()
+        << " (the second at line " << line << "); remove one"
+        << exit(FatalIOError);
 }
 
 
@@ -237,6 +309,21 @@ void Foam::fbm::bodyInput::read
             << exit(FatalIOError);
     }
 
+    // Both containers are dictionaries of dictionaries
+    for (const word key : {"bodies", "particleLists"})
+    {
+        if (fbmDict.found(key) && !fbmDict.isDict(key))
+        {
+            FatalIOErrorInFunction(fbmDict)
+                << "Keyword " << key << " in " << fbmDict.name()
+                << " is not a dictionary: expected " << key
+                << " { <name> { type ...; ... } ... }"
+                << exit(FatalIOError);
+        }
+    }
+
+    checkDuplicates(fbmDict);
+
     DynamicList<body*> all;
     DynamicList<const dictionary*> from;
     wordHashSet names;
@@ -303,6 +390,13 @@ void Foam::fbm::bodyInput::read
                 << " bodies " << listName << "0 - " << listName
                 << X.size() - 1 << nl;
         }
+    }
+
+    if (all.empty())
+    {
+        FatalIOErrorInFunction(fbmDict)
+            << "No bodies in " << fbmDict.name() << ": bodies and"
+            << " particleLists are empty" << exit(FatalIOError);
     }
 
     bodies.setSize(all.size());
