@@ -128,8 +128,11 @@ void Foam::fbm::bodyInput::checkDuplicates(const dictionary& fbmDict)
     label line = -1;
     try
     {
+        // dictionary::read, not the constructor (which resets the mode)
         IFstream is(fbmDict.name());
-        dictionary d(is);
+        dictionary d;
+        d.name() = is.name();
+        d.read(is);
     }
     catch (const IOerror& err)
     {
@@ -153,28 +156,19 @@ void Foam::fbm::bodyInput::checkDuplicates(const dictionary& fbmDict)
     }
     const word key(message.substr(pos + 17).c_str());
 
-    // Where the first one is, if it is a body
-    label firstLine = -1;
+    // A body, or another entry
+    bool isBody = false;
     for (const word container : {"bodies", "particleLists"})
     {
         const dictionary* dictPtr = fbmDict.findDict(container);
-        if (dictPtr && dictPtr->isDict(key))
-        {
-            firstLine = dictPtr->subDict(key).startLineNumber();
-        }
+        isBody = isBody || (dictPtr && dictPtr->isDict(key));
     }
 
-    if (firstLine >= 0)
-    {
-        FatalIOErrorInFunction(fbmDict)
-            << "Body " << key << " is defined twice in " << fbmDict.name()
-            << ": at lines " << firstLine << " and " << line
-            << " (a dictionary would merge the two into one body);"
-            << " give each body its own name" << exit(FatalIOError);
-    }
     FatalIOErrorInFunction(fbmDict)
-        << "Entry " << key << " is defined twice in " << fbmDict.name()
-        << " (the second at line " << line << "); remove one"
+        << (isBody ? "Body " : "Entry ") << key << " is defined twice in "
+        << fbmDict.name() << " (the second time at line " << line << ")"
+        << (isBody ? ": a dictionary would merge the two into one body;"
+            " give each body its own name" : ": remove one")
         << exit(FatalIOError);
 }
 
