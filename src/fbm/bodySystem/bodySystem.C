@@ -121,16 +121,50 @@ void Foam::fbm::bodySystem::checkCoveredVolumes() const
 
 void Foam::fbm::bodySystem::checkStart() const
 {
-    // No body may cross a boundary patch (the same test as while moving)
+    // The bodies' state comes from a restart file when readState() found
+    // one (the same test as there)
+    const bool restart =
+        IOobject
+        (
+            "fbmBodies",
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        ).typeHeaderOk<IOdictionary>(true);
+
+    // No body may cross a boundary patch (the same test as while moving).
+    // A restart state of a run with contacts may hold the free bodies a
+    // little into the walls and into each other, as the contact law lets
+    // them: there, only the bodies no contact model holds are tested at
+    // the walls, and overlaps are not tested
+    boolList check(bodies_.size(), true);
+    if (restart && collisions_.valid())
+    {
+        forAll(bodies_, bi)
+        {
+            check[bi] = !bodies_[bi].translates();
+        }
+    }
     labelList patch;
     scalarList depth;
+    labelList openPatch;
+    scalarList openDepth;
+    boundary_.crossed(bodies_, check, domainBoundary::walls, patch, depth);
     boundary_.crossed
     (
-        bodies_, boolList(bodies_.size(), true), domainBoundary::all,
-        patch, depth
+        bodies_, boolList(bodies_.size(), true), domainBoundary::open,
+        openPatch, openDepth
     );
     forAll(bodies_, bi)
     {
+        if (openPatch[bi] >= 0)
+        {
+            patch[bi] = openPatch[bi];
+            depth[bi] = openDepth[bi];
+        }
         if (patch[bi] < 0) continue;
 
         const body& b = bodies_[bi];
@@ -140,12 +174,14 @@ void Foam::fbm::bodySystem::checkStart() const
             << " crosses the "
             << (boundary_.isWall(patch[bi]) ? "wall" : "open") << " patch "
             << boundary_.patchName(patch[bi]) << " by "
-            << depth[bi] << exit(FatalIOError);
+            << depth[bi]
+            << (restart ? " in the restart state of this time" : "")
+            << exit(FatalIOError);
     }
 
     // No two bodies may overlap (bounding radii: exact for circles and
     // spheres)
-    if (bodies_.size() < 2)
+    if (restart || bodies_.size() < 2)
     {
         return;
     }
