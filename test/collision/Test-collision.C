@@ -70,7 +70,7 @@ dictionary collisionsDict
 }
 
 
-// Body dictionary
+// A round body, built without a dictionary
 Foam::autoPtr<fbm::body> newBody
 (
     const word& name,

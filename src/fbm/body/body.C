@@ -95,6 +95,7 @@ Foam::fbm::body::body
     translate_(translate),
     rotate_(rotate),
     state_(state),
+    motion_(nullptr),
     bandValid_(false),
     U0_(Zero),
     omega0_(Zero),
@@ -130,6 +131,23 @@ Foam::label Foam::fbm::body::findCell
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::body::setMotion
+(
+    autoPtr<prescribedMotion>&& motion,
+    const scalar t
+)
+{
+    if (translate_)
+    {
+        FatalErrorInFunction
+            << "Body " << name_ << ": a prescribed motion needs translate no"
+            << abort(FatalError);
+    }
+    motion_ = std::move(motion);
+    motion_->set(t, state_);
+}
+
 
 Foam::symmTensor Foam::fbm::body::inertia() const
 {

@@ -232,11 +232,40 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
     autoPtr<bodyShape> shape(bodyShape::New(dict, mesh));
     const scalar rho =
         dict.getCheck<scalar>("rho", [](scalar r){ return r > 0; });
-    const point centre(midPlane(mesh, dict.get<point>("centre")));
-    const vector U(dict.get<vector>("U"));
+    const point centre0(midPlane(mesh, dict.get<point>("centre")));
     const vector omega(dict.get<vector>("omega"));
     const bool translate = dict.get<bool>("translate");
     const bool rotate = dict.get<bool>("rotate");
+
+    // A prescribed motion sets the translation: its centre at the start
+    // time, and U
+    autoPtr<prescribedMotion> motion;
+    point centre(centre0);
+    vector U(Zero);
+    if (dict.found("motion"))
+    {
+        if (translate)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << name << ": a prescribed motion with translate"
+                << " yes; set translate no" << exit(FatalIOError);
+        }
+        if (dict.found("U"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body " << name << ": U is given, but the velocity comes"
+                << " from its motion dictionary; remove U"
+                << exit(FatalIOError);
+        }
+        motion = prescribedMotion::New(dict.subDict("motion"), centre0, mesh);
+        const scalar t = mesh.time().value();
+        centre = centre0 + motion->displacement(t);
+        U = motion->velocity(t);
+    }
+    else
+    {
+        U = dict.get<vector>("U");
+    }
 
     // In 2D the centre's empty component is put mid-depth (above); the
     // motion must stay in the plane
@@ -276,7 +305,7 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
             << exit(FatalIOError);
     }
 
-    return autoPtr<body>
+    autoPtr<body> b
     (
         new body
         (
@@ -284,6 +313,11 @@ Foam::autoPtr<Foam::fbm::body> Foam::fbm::bodyInput::newBody
             translate, rotate
         )
     );
+    if (motion.valid())
+    {
+        b->setMotion(std::move(motion), mesh.time().value());
+    }
+    return b;
 }
 
 

@@ -387,6 +387,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
     // Restart: the state written at the start time overrides the initial
     // state of constant/fbmProperties
     readState();
+    setPrescribedMotions(false);
 
     motion_.reset
     (
@@ -488,6 +489,31 @@ void Foam::fbm::bodySystem::constrain(fvMatrix<vector>& UEqn) const
 }
 
 
+void Foam::fbm::bodySystem::setPrescribedMotions(const bool step)
+{
+    // Exact positions and velocities at the current time, whatever the
+    // motion or the contact sub-steps did with the held velocity. After a
+    // step the acceleration is the step's velocity change over dt: the
+    // rate of change of the enclosed fluid's momentum that
+    // forceModels::momentumExchange adds
+    const scalar t = mesh_.time().value();
+    const scalar dt = mesh_.time().deltaTValue();
+    for (body& b : bodies_)
+    {
+        if (b.motion())
+        {
+            bodyState& s = b.state();
+            const vector U0(s.U());
+            b.motion()->set(t, s);
+            if (step)
+            {
+                s.acceleration() = (s.U() - U0)/dt;
+            }
+        }
+    }
+}
+
+
 bool Foam::fbm::bodySystem::advance()
 {
     bool moved = false;
@@ -516,6 +542,7 @@ bool Foam::fbm::bodySystem::advance()
     {
         return true;
     }
+    setPrescribedMotions(true);
 
     phaseTimes::scope cellsTime(times_, phaseTimes::cells);
     fb_.update();

@@ -30,32 +30,4 @@ Foam::fbm::forceModel::forceModel(const dictionary&)
 {}
 
 
-// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
-
-Foam::autoPtr<Foam::fbm::forceModel> Foam::fbm::forceModel::New
-(
-    const dictionary& dict
-)
-{
-    const word modelType(dict.get<word>("forceModel"));
-
-    Info<< "fbm: force model " << modelType << nl;
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "forceModel",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<forceModel>(cstrIter()(dict));
-}
-
-
 // ************************************************************************* //
