@@ -95,10 +95,11 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         // --- Explicit coupling: move the bodies with the forces of the
-        //     last step
+        //     last step. A body that reached a wall ends the run without
+        //     writing this time: the last written time is the last good one
         if (!fbm.moveBodies())
         {
-            runTime.writeAndEnd();
+            break;
         }
 
         // --- Pressure-velocity PIMPLE corrector loop
@@ -123,7 +124,7 @@ int main(int argc, char *argv[])
         //     bodies move here and U takes their rigid motion)
         if (!fbm.correctForces(U, p, turbulence->nuEff()))
         {
-            runTime.writeAndEnd();
+            break;
         }
 
         runTime.write();

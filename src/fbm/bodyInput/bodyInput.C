@@ -14,6 +14,7 @@ License
 #include "fvMesh.H"
 #include "HashSet.H"
 #include "ITstream.H"
+#include "IFstream.H"
 #include "indexedOctree.H"
 #include "treeDataCell.H"
 #include "circle.H"
@@ -155,9 +156,74 @@ void Foam::fbm::bodyInput::readParticleList
         rhos.append(rhoi);
     }
 
+    if (X.empty())
+    {
+        FatalIOErrorInFunction(listDict)
+            << "Keyword particles of " << listName << ": the list is empty"
+            << " (a list needs at least one particle)" << exit(FatalIOError);
+    }
+
     centres.transfer(X);
     radii.transfer(R);
     rho.transfer(rhos);
+}
+
+
+void Foam::fbm::bodyInput::checkDuplicates(const dictionary& fbmDict)
+{
+    // A dictionary merges entries of the same name (two bodies of one name
+    // would become one with mixed keywords): read the file again with
+    // duplicates an error, and name both
+    const entry::inputMode oldMode = entry::globalInputMode;
+    const bool oldThrow = FatalIOError.throwExceptions();
+    entry::globalInputMode = entry::inputMode::ERROR;
+
+    string message;
+    label line = -1;
+    try
+    {
+        // dictionary::read, not the constructor (which resets the mode)
+        IFstream is(fbmDict.name());
+        dictionary d;
+        d.name() = is.name();
+        d.read(is);
+    }
+    catch (const IOerror& err)
+    {
+        message = err.message();
+        line = err.ioStartLineNumber();
+    }
+    entry::globalInputMode = oldMode;
+    FatalIOError.throwExceptions(oldThrow);
+
+    if (line < 0 && message.empty())
+    {
+        return;
+    }
+
+    // "duplicate entry: NAME" (any other read error was reported by the
+    // first read already)
+    const std::string::size_type pos = message.find("duplicate entry: ");
+    if (pos == std::string::npos)
+    {
+        return;
+    }
+    const word key(message.substr(pos + 17).c_str());
+
+    // A body, or another entry
+    bool isBody = false;
+    for (const word container : {"bodies", "particleLists"})
+    {
+        const dictionary* dictPtr = fbmDict.findDict(container);
+        isBody = isBody || (dictPtr && dictPtr->isDict(key));
+    }
+
+    FatalIOErrorInFunction(fbmDict)
+        << (isBody ? "Body " : "Entry ") << key << " is defined twice in "
+        << fbmDict.name() << " (the second time at line " << line << ")"
+        << (isBody ? ": a dictionary would merge the two into one body;"
+            " give each body its own name" : ": remove one")
+        << exit(FatalIOError);
 }
 
 
@@ -353,6 +419,21 @@ void Foam::fbm::bodyInput::read
             << exit(FatalIOError);
     }
 
+    // Both containers are dictionaries of dictionaries
+    for (const word key : {"bodies", "particleLists"})
+    {
+        if (fbmDict.found(key) && !fbmDict.isDict(key))
+        {
+            FatalIOErrorInFunction(fbmDict)
+                << "Keyword " << key << " in " << fbmDict.name()
+                << " is not a dictionary: expected " << key
+                << " { <name> { type ...; ... } ... }"
+                << exit(FatalIOError);
+        }
+    }
+
+    checkDuplicates(fbmDict);
+
     DynamicList<body*> all;
     DynamicList<const dictionary*> from;
     wordHashSet names;
@@ -419,6 +500,13 @@ void Foam::fbm::bodyInput::read
                 << " bodies " << listName << "0 - " << listName
                 << X.size() - 1 << nl;
         }
+    }
+
+    if (all.empty())
+    {
+        FatalIOErrorInFunction(fbmDict)
+            << "No bodies in " << fbmDict.name() << ": bodies and"
+            << " particleLists are empty" << exit(FatalIOError);
     }
 
     bodies.setSize(all.size());

@@ -15,6 +15,7 @@ License
 #include "fvMatrices.H"
 #include "Time.H"
 #include "uniformDimensionedFields.H"
+#include "contactSearch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -50,7 +51,25 @@ Foam::vector Foam::fbm::bodySystem::readGravity() const
                 << "Body " << b.name() << " translates, but there is no"
                 << " gravity file " << gIO.objectPath() << exit(FatalIOError);
         }
-        return uniformDimensionedVectorField(gIO).value();
+        const vector g(uniformDimensionedVectorField(gIO).value());
+
+        // A 2D mesh solves no motion along its empty direction: gravity
+        // there would be dropped (a body under gravity along it alone
+        // never moves)
+        const Vector<label>& sd = mesh_.solutionD();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (sd[d] < 0 && mag(g[d]) > 0)
+            {
+                FatalIOErrorInFunction(gIO.objectPath())
+                    << "Keyword value of " << gIO.objectPath() << ": gravity "
+                    << g << " has a component along the empty direction of"
+                    << " this 2D mesh, which is not solved (body " << b.name()
+                    << " translates); put gravity in the plane of the mesh"
+                    << exit(FatalIOError);
+            }
+        }
+        return g;
     }
     return Zero;
 }
@@ -127,7 +146,218 @@ void Foam::fbm::bodySystem::checkDensities
                 << " 1e6 (magnitudes below 1e-300 are read as 0)"
                 << exit(FatalIOError);
         }
+}
+
+
+void Foam::fbm::bodySystem::checkStart() const
+{
+    // The bodies' state comes from a restart file when readState() found
+    // one (the same test as there)
+    const bool restart =
+        IOobject
+        (
+            "fbmBodies",
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        ).typeHeaderOk<IOdictionary>(true);
+
+    // No body may cross a boundary patch (the same test as while moving).
+    // A restart state of a run with contacts may hold the free bodies a
+    // little into the walls and into each other, as the contact law lets
+    // them: there, only the bodies no contact model holds are tested at
+    // the walls, and overlaps are not tested
+    boolList check(bodies_.size(), true);
+    if (restart && collisions_.valid())
+    {
+        forAll(bodies_, bi)
+        {
+            check[bi] = !bodies_[bi].translates();
+        }
     }
+    labelList patch;
+    scalarList depth;
+    labelList openPatch;
+    scalarList openDepth;
+    boundary_.crossed(bodies_, check, domainBoundary::walls, patch, depth);
+    boundary_.crossed
+    (
+        bodies_, boolList(bodies_.size(), true), domainBoundary::open,
+        openPatch, openDepth
+    );
+    forAll(bodies_, bi)
+    {
+        if (openPatch[bi] >= 0)
+        {
+            patch[bi] = openPatch[bi];
+            depth[bi] = openDepth[bi];
+        }
+        if (patch[bi] < 0) continue;
+
+        const body& b = bodies_[bi];
+        FatalIOErrorInFunction(*this)
+            << "Body " << b.name() << " (centre " << b.centre() << ", radius "
+            << b.shape().radius() << ") is not wholly inside the mesh: it"
+            << " crosses the "
+            << (boundary_.isWall(patch[bi]) ? "wall" : "open") << " patch "
+            << boundary_.patchName(patch[bi]) << " by "
+            << depth[bi]
+            << (restart ? " in the restart state of this time" : "")
+            << exit(FatalIOError);
+    }
+
+    // No two bodies may overlap (bounding radii: exact for circles and
+    // spheres; pairs with a non-round body are not tested, as their
+    // bounding circles may overlap while they do not)
+    if (restart || bodies_.size() < 2)
+    {
+        return;
+    }
+    pointField X(bodies_.size());
+    scalarList R(bodies_.size());
+    forAll(bodies_, bi)
+    {
+        X[bi] = bodies_[bi].centre();
+        R[bi] = bodies_[bi].shape().radius();
+    }
+    contactSearch search;
+    search.search(X, R, 0);
+
+    label nOverlap = 0;
+    OStringStream pairs;
+    for (const labelPair& ij : search.pairs())
+    {
+        const label i = ij.first();
+        const label j = ij.second();
+        if
+        (
+            !bodies_[i].shape().isotropic()
+         || !bodies_[j].shape().isotropic()
+        )
+        {
+            continue;
+        }
+        const scalar d = R[i] + R[j] - mag(X[i] - X[j]);
+        if (d > 1e-6*min(R[i], R[j]))
+        {
+            if (nOverlap < 10)
+            {
+                pairs
+                    << "    " << bodies_[i].name() << " and "
+                    << bodies_[j].name() << ": overlap depth " << d << nl;
+            }
+            ++nOverlap;
+        }
+    }
+    if (nOverlap)
+    {
+        FatalIOErrorInFunction(*this)
+            << nOverlap << " pairs of bodies overlap at the start"
+            << (nOverlap > 10 ? " (the first 10)" : "") << ":" << nl
+            << pairs.str().c_str()
+            << "    Move them apart (bodies may touch, not overlap)"
+            << exit(FatalIOError);
+    }
+}
+
+
+bool Foam::fbm::bodySystem::checkBoundary(const scalarList& vol) const
+{
+    const word& t = mesh_.time().timeName();
+
+    // The moving bodies, and those of them no contact model holds at the
+    // walls (prescribed motion, or no contact model at all)
+    boolList moving(bodies_.size());
+    boolList unheld(bodies_.size());
+    forAll(bodies_, bi)
+    {
+        moving[bi] = bodies_[bi].moves();
+        unheld[bi] =
+            moving[bi] && !(collisions_.valid() && bodies_[bi].translates());
+    }
+
+    labelList patch;
+    scalarList depth;
+
+    // Open patches: a body there would leave the domain
+    if (boundary_.hasOpen())
+    {
+        boundary_.crossed(bodies_, moving, domainBoundary::open, patch, depth);
+        forAll(bodies_, bi)
+        {
+            if (patch[bi] < 0) continue;
+
+            const body& b = bodies_[bi];
+            FatalErrorInFunction
+                << "Body " << b.name() << " at time " << t << " (centre "
+                << b.centre() << ", radius " << b.shape().radius()
+                << ") reaches the open boundary patch "
+                << boundary_.patchName(patch[bi]) << " (overlap " << depth[bi]
+                << "): bodies cannot leave the domain" << nl
+                << "    The run stops; the last written time is the last"
+                << " good state." << exit(FatalError);
+        }
+    }
+
+    // Walls, for the bodies no contact model holds
+    boundary_.crossed(bodies_, unheld, domainBoundary::walls, patch, depth);
+
+    bool inside = true;
+    forAll(bodies_, bi)
+    {
+        if (!moving[bi]) continue;
+
+        const body& b = bodies_[bi];
+        const scalar Vb = b.shape().volume();
+
+        // A body whose centre left the mesh in one step crosses no face
+        // any more: its covered volume tells
+        if (vol[bi] < 0.5*Vb)
+        {
+            const label pi = boundary_.nearestPatch(b.centre());
+            FatalErrorInFunction
+                << "Body " << b.name() << " at time " << t << " (centre "
+                << b.centre() << ", U " << b.U() << ") has left the mesh"
+                << (pi < 0 ? "" : " near patch ")
+                << (pi < 0 ? word::null : boundary_.patchName(pi))
+                << ": covered volume " << vol[bi] << " of " << Vb << nl
+                << "    The run stops; the last written time is the last"
+                << " good state. Reduce the time step (maxBodyCo)."
+                << exit(FatalError);
+        }
+
+        if (!unheld[bi]) continue;
+
+        label pi = patch[bi];
+        if (pi < 0 && vol[bi] < (1 - 1e-3)*Vb)
+        {
+            pi = boundary_.nearestPatch(b.centre());
+        }
+        if (pi < 0) continue;
+
+        if (!boundary_.isWall(pi))
+        {
+            FatalErrorInFunction
+                << "Body " << b.name() << " at time " << t << " (centre "
+                << b.centre() << ") is cut by the boundary near the open"
+                << " patch " << boundary_.patchName(pi) << ": covered volume "
+                << vol[bi] << " of " << Vb << nl
+                << "    The run stops; the last written time is the last"
+                << " good state." << exit(FatalError);
+        }
+
+        Info<< "fbm: body " << b.name() << " reaches the domain boundary"
+            << " (wall patch " << boundary_.patchName(pi) << ") at time " << t
+            << " (centre " << b.centre() << "): no contact model holds it,"
+            << " the run ends without writing this time; the last written"
+            << " time is the last good state" << nl;
+        inside = false;
+    }
+
+    return inside;
 }
 
 
@@ -244,6 +474,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
     ),
     bodies_(),
     fb_(mesh, *this, bodies_),
+    boundary_(mesh),
     forceModel_(forceModel::New(*this)),
     compareModels_(),
     coupling_(),
@@ -319,6 +550,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
 
     fb_.update();
 
+    checkStart();
     checkCoveredVolumes();
 
     output_.reset(new bodyOutput(*this, sources, modelNames));
@@ -436,31 +668,7 @@ bool Foam::fbm::bodySystem::advance()
     phaseTimes::scope cellsTime(times_, phaseTimes::cells);
     fb_.update();
 
-    // With collisions the walls are handled by the contact
-    if (collisions_.valid())
-    {
-        return true;
-    }
-
-    // A body whose covered volume falls short of its own has reached the
-    // boundary of the domain
-    const scalarList vol(fb_.coveredVolumes());
-    bool inside = true;
-    forAll(bodies_, bi)
-    {
-        const body& b = bodies_[bi];
-        if (!b.moves()) continue;
-
-        if (vol[bi] < (1 - 1e-3)*b.shape().volume())
-        {
-            Info<< "fbm: body " << b.name() << " reaches the domain boundary"
-                << " at time " << mesh_.time().timeName() << " (centre "
-                << b.centre() << "): no contact model, the run ends" << nl;
-            inside = false;
-        }
-    }
-
-    return inside;
+    return checkBoundary(fb_.coveredVolumes());
 }
 
 
@@ -509,6 +717,11 @@ bool Foam::fbm::bodySystem::correctForces
     }
 
     const bool inside = coupling_->afterFlow(U, force, torque);
+    if (!inside)
+    {
+        // A body reached a wall: this state is not written
+        return false;
+    }
 
     {
         phaseTimes::scope outputTime(times_, phaseTimes::output);
