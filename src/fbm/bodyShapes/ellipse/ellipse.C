@@ -47,8 +47,8 @@ Foam::fbm::bodyShapes::ellipse::ellipse
 {
     // The mesh first: the message for a 3D mesh names the shape
     checkDimension(mesh, dict, 2, axes_);
-    a_ = dict.getCheck<scalar>("a", [](scalar x){ return x > 0; });
-    b_ = dict.getCheck<scalar>("b", [](scalar x){ return x > 0; });
+    a_ = readLength(dict, "a", mesh);
+    b_ = readLength(dict, "b", mesh);
     setSemiAxes();
 }
 

@@ -47,7 +47,7 @@ Foam::fbm::bodyShapes::ellipsoid::ellipsoid
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         const word key(d == 0 ? "a" : d == 1 ? "b" : "c");
-        e_[d] = dict.getCheck<scalar>(key, [](scalar x){ return x > 0; });
+        e_[d] = readLength(dict, key, mesh);
     }
 }
 
