@@ -146,6 +146,7 @@ void Foam::fbm::bodySystem::checkDensities
                 << " 1e6 (magnitudes below 1e-300 are read as 0)"
                 << exit(FatalIOError);
         }
+    }
 }
 
 
