@@ -152,19 +152,9 @@ void Foam::fbm::bodySystem::checkDensities
 
 void Foam::fbm::bodySystem::checkStart() const
 {
-    // The bodies' state comes from a restart file when readState() found
-    // one (the same test as there)
-    const bool restart =
-        IOobject
-        (
-            "fbmBodies",
-            mesh_.time().timeName(),
-            "uniform",
-            mesh_,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        ).typeHeaderOk<IOdictionary>(true);
+    // The bodies' state comes from a restart file when readState() read
+    // one (on every processor alike)
+    const bool restart = !stateFile_.empty();
 
     // No body may cross a boundary patch (the same test as while moving).
     // A restart state of a run with contacts may hold the free bodies a
