@@ -155,8 +155,8 @@ bool Foam::fbm::convexDistance::closest
     scalar lambda[4]
 ) const
 {
-    label idx[4];
-    scalar w[4];
+    label idx[4] = {0, 0, 0, 0};
+    scalar w[4] = {0, 0, 0, 0};
     label m = 0;
     bool inside = false;
 
@@ -510,11 +510,13 @@ Foam::fbm::convexDistance::convexDistance
 (
     const vector& planeNormal,
     const scalar tol,
+    const scalar epaTol3D,
     const label maxIter
 )
 :
     planeNormal_(planeNormal),
     tol_(tol),
+    epaTol3D_(epaTol3D),
     maxIter_(maxIter)
 {
     const scalar m = mag(planeNormal_);
@@ -601,7 +603,11 @@ Foam::fbm::convexDistance::result Foam::fbm::convexDistance::distance
             }
             else
             {
-                epa3D(sA, QA, XA, sB, QB, XB, W, A, B, delta, res);
+                epa3D
+                (
+                    sA, QA, XA, sB, QB, XB, W, A, B,
+                    epaTol3D_*(sA.radius() + sB.radius()), res
+                );
             }
             return res;
         }
@@ -615,8 +621,89 @@ Foam::fbm::convexDistance::result Foam::fbm::convexDistance::distance
 
         if (magSqr(v) <= sqr(delta))
         {
-            // Touching within the tolerance
+            // The origin on the simplex (within the tolerance): touching,
+            // or overlapping with a simplex not yet full (a symmetric
+            // pair). Add support points normal to the simplex while C
+            // extends beyond the tolerance there; a full simplex holds
+            // the origin: EPA. Otherwise the origin is on C's boundary
+            // with the outward normal m: touching.
+            vector m(Zero);
+            const label n0 = n;
+            while (n >= 2 && n < (twoD ? 3 : 4))
+            {
+                if (n == 2)
+                {
+                    const vector t(W[1] - W[0]);
+                    if (twoD)
+                    {
+                        m = t ^ e;
+                    }
+                    else
+                    {
+                        // Any direction normal to t
+                        const vector ax
+                        (
+                            mag(t.x()) <= mag(t.y()) && mag(t.x()) <= mag(t.z())
+                          ? vector(1, 0, 0)
+                          : mag(t.y()) <= mag(t.z())
+                          ? vector(0, 1, 0) : vector(0, 0, 1)
+                        );
+                        m = t ^ ax;
+                    }
+                }
+                else
+                {
+                    m = (W[1] - W[0]) ^ (W[2] - W[0]);
+                }
+                const scalar mm = mag(m);
+                if (mm <= VSMALL)
+                {
+                    break;
+                }
+                m /= mm;
+                const point a(XA + sA.support(QA, m));
+                const point b(XB + sB.support(QB, -m));
+                const point w(inPlane(a - b));
+                if ((w & m) <= delta)
+                {
+                    break;
+                }
+                W[n] = w;
+                A[n] = a;
+                B[n] = b;
+                ++n;
+            }
+            if (n == (twoD ? 3 : 4))
+            {
+                res.overlap = true;
+                if (twoD)
+                {
+                    epa2D(sA, QA, XA, sB, QB, XB, W, A, B, delta, res);
+                }
+                else
+                {
+                    epa3D
+                    (
+                        sA, QA, XA, sB, QB, XB, W, A, B,
+                        epaTol3D_*(sA.radius() + sB.radius()), res
+                    );
+                }
+                return res;
+            }
             res.converged = true;
+            if (magSqr(m) > 0)
+            {
+                res.pA = Zero;
+                res.pB = Zero;
+                for (label k = 0; k < n0; ++k)
+                {
+                    res.pA += lambda[k]*A[k];
+                    res.pB += lambda[k]*B[k];
+                }
+                res.gap = mag(v);
+                res.normal = m;
+                return res;
+            }
             break;
         }
     }
