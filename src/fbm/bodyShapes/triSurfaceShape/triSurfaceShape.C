@@ -225,4 +225,33 @@ Foam::vector Foam::fbm::bodyShapes::triSurfaceShape::support
 }
 
 
+Foam::vector Foam::fbm::bodyShapes::triSurfaceShape::planeContact
+(
+    const tensor& Q,
+    const vector& d,
+    const scalar band
+) const
+{
+    const vector db(Q.T() & d);
+    const pointField& pts = surf_->localPoints();
+    scalar hMax = -GREAT;
+    for (const point& p : pts)
+    {
+        hMax = max(hMax, p & db);
+    }
+    vector sum(Zero);
+    scalar sumW = 0;
+    for (const point& p : pts)
+    {
+        const scalar w = 1 - (hMax - (p & db))/max(band, VSMALL);
+        if (w > 0)
+        {
+            sum += w*p;
+            sumW += w;
+        }
+    }
+    return Q & (sum/sumW);
+}
+
+
 // ************************************************************************* //

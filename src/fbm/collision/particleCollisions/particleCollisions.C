@@ -411,7 +411,18 @@ void Foam::fbm::particleCollisions::shapeWall
         return;
     }
 
-    const vector r(cmptMultiply(planeMask_, s + 0.5*gap*nw));
+    // The contact point: on a flat face (polygon, triSurface) the middle of
+    // its vertices within the range (a face on the wall touches at its
+    // middle, not at one corner)
+    const vector r
+    (
+        cmptMultiply
+        (
+            planeMask_,
+            b.shape().planeContact(b.state().Q(), nw, 0.5*law.range())
+          + 0.5*gap*nw
+        )
+    );
     vector Fi(-law.wallForceAtGap(gap, R_[i])*nw);
 
     if (dampingRatio_ > 0)
