@@ -35,7 +35,11 @@ Description
       dropped onto the bottom wall with damping and without fluid: never
       through the wall, no energy gained; the rectangle at rest on its long
       side (the smooth bodies and the box keep rocking without fluid or
-      friction).
+      friction);
+    - 2D: a pile of 40 ellipses and rectangles at random orientations
+      dropped into the box: finite, inside the walls, no pair overlapping
+      by more than 10 % of the bounding radius, no energy gained, settled
+      (kinetic energy below 1e-3 of the start energy).
 
 \*---------------------------------------------------------------------------*/
 
@@ -529,6 +533,95 @@ void dropOnWall
 }
 
 
+// A pile: 40 ellipses and rectangles (bounding radii 0.05, 0.045) on a
+// lattice at random orientations, dropped into the box with damping and
+// without fluid: the contacts of many non-round bodies stay finite, the
+// bodies stay inside the walls and apart (smallest pair gap above -10 % of
+// the bounding radius), no energy is gained, and the pile settles
+void pile(const fvMesh& mesh, Random& rng)
+{
+    const boundBox& bb = mesh.bounds();
+    const scalar z = bb.centre().z();
+    PtrList<fbm::body> bodies(40);
+    label k = 0;
+    for (label row = 0; row < 5; ++row)
+    {
+        for (label col = 0; col < 8; ++col)
+        {
+            const point X(0.115 + 0.11*col, 0.3 + 0.11*row, z);
+            const tensor Q
+            (
+                rotation(vector(0, 0, 1), 6.28*rng.sample01<scalar>())
+            );
+            const word name("p" + Foam::name(k));
+            if (k % 4 == 3)
+            {
+                bodies.set
+                (
+                    k,
+                    newBody
+                    (
+                        name,
+                        polygonDict
+                        ({
+                            vector2D(-0.04, -0.02), vector2D(0.04, -0.02),
+                            vector2D(0.04, 0.02), vector2D(-0.04, 0.02)
+                        }),
+                        X, Zero, Q, mesh
+                    )
+                );
+            }
+            else
+            {
+                bodies.set
+                (
+                    k, newBody(name, ellipseDict(0.05, 0.025), X, Zero, Q, mesh)
+                );
+            }
+            ++k;
+        }
+    }
+    const scalar g = 10;
+    const fbm::rigidBodyMotion motion(vector(0, -g, 0), 1e-12, 0, mesh);
+    fbm::particleCollisions coll
+    (
+        collisionsDict(0.01, 1e-5, 5e-6, 0.5), mesh, bodies
+    );
+    auto energy = [&]()
+    {
+        scalar E = kineticEnergy(bodies);
+        for (const fbm::body& b : bodies)
+        {
+            E += b.mass()*g*(b.centre().y() - bb.min().y());
+        }
+        return E;
+    };
+    const scalar E0 = energy();
+    scalar Emax = E0, minPair = GREAT, minWall = GREAT;
+    bool finite = true;
+    const scalar dt = 0.002;
+    for (label step = 0; step < 1000; ++step)
+    {
+        coll.move(bodies, motion, dt);
+        minPair = min(minPair, coll.minPairGap());
+        minWall = min(minWall, coll.minWallGap());
+        const scalar E = energy();
+        finite = finite && std::isfinite(E);
+        Emax = max(Emax, E);
+    }
+    const scalar KE = kineticEnergy(bodies);
+    Info<< "    pile of 40: " << coll.nSubCycles(dt) << " sub-steps per step;"
+        << " smallest pair gap " << minPair << ", wall gap " << minWall
+        << ", largest energy / start " << Emax/E0
+        << ", kinetic / start energy at the end " << KE/E0 << nl;
+    fbmTest::check("pile: finite", scalar(finite), 1, 0);
+    fbmTest::check("pile: never through a wall", scalar(minWall > 0), 1, 0);
+    fbmTest::check("pile: pair overlap below 10 % of R", scalar(minPair > -0.005), 1, 0);
+    fbmTest::check("pile: energy never above the start", scalar(Emax <= E0), 1, 0);
+    fbmTest::check("pile: settled (kinetic < 1e-3 start energy)", KE/E0, 0, 1e-3);
+}
+
+
 // Write a box of sides L as OBJ, corners at (0|Lx, 0|Ly, 0|Lz)
 void writeCube(const fileName& path, const vector& L = vector::one)
 {
@@ -706,6 +799,9 @@ int main(int argc, char *argv[])
             0.5, 0.04, true, mesh
         );
         dropOnWall("ellipse on the wall", ellipseDict(0.1, 0.05), 0.5, 0.05, false, mesh);
+
+        // ---- A pile of 40 ellipses and rectangles ----
+        pile(mesh, rng);
     }
     else
     {
