@@ -16,6 +16,7 @@ License
 #include "Time.H"
 #include "uniformDimensionedFields.H"
 #include "contactSearch.H"
+#include "convexDistance.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -201,8 +202,8 @@ void Foam::fbm::bodySystem::checkStart() const
     }
 
     // No two bodies may overlap (bounding radii: exact for circles and
-    // spheres; pairs with a non-round body are not tested, as their
-    // bounding circles may overlap while they do not)
+    // spheres; a pair with a non-round body whose bounding circles
+    // overlap: the signed distance of the shapes, fbm::convexDistance)
     if (restart || bodies_.size() < 2)
     {
         return;
@@ -217,21 +218,30 @@ void Foam::fbm::bodySystem::checkStart() const
     contactSearch search;
     search.search(X, R, 0);
 
+    vector planeNormal(Zero);
+    const Vector<label>& sd = mesh_.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0) planeNormal[d] = 1;
+    }
+    const convexDistance narrow(planeNormal);
+
     label nOverlap = 0;
     OStringStream pairs;
     for (const labelPair& ij : search.pairs())
     {
         const label i = ij.first();
         const label j = ij.second();
-        if
-        (
-            !bodies_[i].shape().isotropic()
-         || !bodies_[j].shape().isotropic()
-        )
-        {
-            continue;
-        }
-        const scalar d = R[i] + R[j] - mag(X[i] - X[j]);
+        const body& bi = bodies_[i];
+        const body& bj = bodies_[j];
+        const scalar d =
+            (bi.shape().isotropic() && bj.shape().isotropic())
+          ? R[i] + R[j] - mag(X[i] - X[j])
+          : -narrow.distance
+            (
+                bi.shape(), bi.state().Q(), X[i],
+                bj.shape(), bj.state().Q(), X[j]
+            ).gap;
         if (d > 1e-6*min(R[i], R[j]))
         {
             if (nOverlap < 10)

@@ -67,6 +67,17 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
     const vector& omegaDotLag
 ) const
 {
+    return angularAcceleration(b, omegaDotLag, b.torque());
+}
+
+
+Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
+(
+    const body& b,
+    const vector& omegaDotLag,
+    const vector& T
+) const
+{
     // Same virtual-mass stabilisation as the translation, with the
     // inertia of the enclosed fluid I_f = (rho_f/rho_s) I
     const symmTensor I(b.inertia());
@@ -76,7 +87,7 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
     (
         inv(I + addedMassCoeff_*If)
       & (
-            b.torque() - (omega ^ (I & omega))
+            T - (omega ^ (I & omega))
           + addedMassCoeff_*(If & omegaDotLag)
         )
     );
@@ -101,6 +112,17 @@ Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
     const vector& omegaDotLag
 ) const
 {
+    return splitTorque(b, omegaDotLag, b.torque());
+}
+
+
+Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
+(
+    const body& b,
+    const vector& omegaDotLag,
+    const vector& T
+) const
+{
     // (1 + c) dL/dt = T + c (I omegaDot^n + omega x I omega), c = C_a
     // rho_f/rho_s: the virtual-mass form of angularAcceleration() with
     // d(I omega)/dt = I omegaDot + omega x I omega
@@ -109,10 +131,10 @@ Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
     const scalar c = addedMassCoeff_*rhoFluid_/b.rho();
     if (c == 0)
     {
-        return b.torque();
+        return T;
     }
     return
-        (b.torque() + c*((I & omegaDotLag) + (omega ^ (I & omega))))
+        (T + c*((I & omegaDotLag) + (omega ^ (I & omega))))
        /(1 + c);
 }
 
@@ -343,6 +365,46 @@ void Foam::fbm::rigidBodyMotion::endTranslationSubCycles
         {
             s.omega() += h*angularAcceleration(b, b.omegaDotHeld());
         }
+    }
+}
+
+
+void Foam::fbm::rigidBodyMotion::angularSubKick
+(
+    body& b,
+    const scalar dt,
+    const vector& Tc
+) const
+{
+    if (splitRotation(b))
+    {
+        angularKick(b, dt, splitTorque(b, b.omegaDotHeld(), b.torque() + Tc));
+    }
+    else if (b.rotates())
+    {
+        b.state().omega() +=
+            dt*angularAcceleration(b, b.omegaDotHeld(), b.torque() + Tc);
+    }
+}
+
+
+void Foam::fbm::rigidBodyMotion::rotationDrift
+(
+    body& b,
+    const scalar dt
+) const
+{
+    if (!b.rotates() && magSqr(b.omega()) == 0)
+    {
+        return;
+    }
+    if (splitRotation(b))
+    {
+        freeRotation(b, dt);
+    }
+    else
+    {
+        rotate(b, dt*b.omega());
     }
 }
 

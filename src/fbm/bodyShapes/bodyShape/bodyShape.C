@@ -43,6 +43,21 @@ Foam::fbm::bodyShape::bodyShape(const polyMesh& mesh)
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::fbm::bodyShape::support
+(
+    const tensor&,
+    const vector&
+) const
+{
+    FatalErrorInFunction
+        << "The shape " << type() << " has no support function"
+        << abort(FatalError);
+    return Zero;
+}
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 Foam::vector Foam::fbm::bodyShape::rotatedHalfExtent(const vector& e) const

@@ -242,4 +242,16 @@ Foam::symmTensor Foam::fbm::bodyShapes::circle::inertiaPerDensity() const
 }
 
 
+Foam::vector Foam::fbm::bodyShapes::circle::support
+(
+    const tensor&,
+    const vector& d
+) const
+{
+    const vector dp(inPlane(d));
+    const scalar m = mag(dp);
+    return m > 0 ? (radius_/m)*dp : vector::zero;
+}
+
+
 // ************************************************************************* //

@@ -140,4 +140,15 @@ Foam::symmTensor Foam::fbm::bodyShapes::ellipse::inertiaPerDensity() const
 }
 
 
+Foam::vector Foam::fbm::bodyShapes::ellipse::support
+(
+    const tensor& Q,
+    const vector& d
+) const
+{
+    // e_ is 0 in the empty direction: the point is in the plane
+    return ellipsoid::supportPoint(e_, Q, inPlane(d));
+}
+
+
 // ************************************************************************* //

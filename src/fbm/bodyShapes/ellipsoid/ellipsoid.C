@@ -194,4 +194,30 @@ Foam::scalar Foam::fbm::bodyShapes::ellipsoid::diameter() const
 }
 
 
+Foam::vector Foam::fbm::bodyShapes::ellipsoid::supportPoint
+(
+    const vector& e,
+    const tensor& Q,
+    const vector& d
+)
+{
+    // Body frame: x.d largest on x^T diag(e)^-2 x = 1 at
+    // x = E db/sqrt(db.E db), E = diag(e^2), db = Q^T d
+    const vector db(Q.T() & d);
+    const vector Edb(sqr(e.x())*db.x(), sqr(e.y())*db.y(), sqr(e.z())*db.z());
+    const scalar s = db & Edb;
+    return s > 0 ? (Q & Edb)/Foam::sqrt(s) : vector::zero;
+}
+
+
+Foam::vector Foam::fbm::bodyShapes::ellipsoid::support
+(
+    const tensor& Q,
+    const vector& d
+) const
+{
+    return supportPoint(e_, Q, d);
+}
+
+
 // ************************************************************************* //

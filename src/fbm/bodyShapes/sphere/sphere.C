@@ -123,4 +123,15 @@ Foam::symmTensor Foam::fbm::bodyShapes::sphere::inertiaPerDensity() const
 }
 
 
+Foam::vector Foam::fbm::bodyShapes::sphere::support
+(
+    const tensor&,
+    const vector& d
+) const
+{
+    const scalar m = mag(d);
+    return m > 0 ? (radius_/m)*d : vector::zero;
+}
+
+
 // ************************************************************************* //

@@ -38,6 +38,66 @@ Foam::scalar Foam::fbm::particleCollisions::forceScale(const fvMesh& mesh)
 }
 
 
+Foam::vector Foam::fbm::particleCollisions::planeMask(const fvMesh& mesh)
+{
+    vector mask(1, 1, 1);
+    const Vector<label>& sd = mesh.solutionD();
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (sd[d] < 0) mask[d] = 0;
+    }
+    return mask;
+}
+
+
+Foam::scalar Foam::fbm::particleCollisions::contactMass(const body& b) const
+{
+    const scalar m = b.translates() ? b.mass() : GREAT;
+    if (b.shape().isotropic() || !b.rotates())
+    {
+        return m;
+    }
+
+    // Smallest moment of inertia about an axis the body turns about: the
+    // empty direction's in 2D, the smallest principal one in 3D
+    const symmTensor I0(b.rho()*b.shape().inertiaPerDensity());
+    scalar Imin = 0;
+    if (cmptMin(planeMask_) == 0)
+    {
+        const vector e(vector::one - planeMask_);
+        Imin = e & (I0 & e);
+    }
+    else
+    {
+        Imin = cmptMin(eigenValues(I0));
+    }
+    const scalar R = b.shape().radius();
+    return 1/((m < GREAT ? 1/m : 0) + sqr(R)/max(Imin, VSMALL));
+}
+
+
+Foam::scalar Foam::fbm::particleCollisions::inverseMass
+(
+    const body& b,
+    const label i,
+    const vector& r,
+    const vector& n
+) const
+{
+    scalar w = 0;
+    if (translates_[i] && mass_[i] < GREAT)
+    {
+        w += 1/mass_[i];
+    }
+    if (b.rotates())
+    {
+        const vector rn(r ^ n);
+        w += rn & (inv(b.inertia()) & rn);
+    }
+    return w;
+}
+
+
 Foam::scalar Foam::fbm::particleCollisions::meshSize(const fvMesh& mesh)
 {
     const scalar Vmax = gMax(mesh.V().field());
@@ -56,17 +116,16 @@ const Foam::dictionary& Foam::fbm::particleCollisions::checkShapes
     const PtrList<body>& bodies
 )
 {
-    // The contact law acts between bounding circles and spheres: not for
-    // shapes whose surface is elsewhere
+    // The narrow phase of non-round bodies needs a support function
     for (const body& b : bodies)
     {
-        if (!b.shape().isotropic())
+        if (!b.shape().isotropic() && !b.shape().hasSupport())
         {
             FatalIOErrorInFunction(dict)
-                << "Body " << b.name() << ": collisions of the shape "
-                << b.shape().type() << " are not implemented yet (the"
-                << " contact model acts between circles and spheres only);"
-                << " remove the collisions dictionary" << exit(FatalIOError);
+                << "Body " << b.name() << ": the shape (type "
+                << b.shape().type() << ") has no support function, so it"
+                << " cannot take part in the contacts of the collisions"
+                << " dictionary" << exit(FatalIOError);
         }
     }
     return dict;
@@ -109,6 +168,11 @@ Foam::fbm::particleCollisions::particleCollisions
     ),
     walls_(mesh),
     search_(),
+    planeMask_(planeMask(mesh)),
+    narrow_(vector::one - planeMask_),
+    round_(bodies.size(), true),
+    allRound_(true),
+    torque_(bodies.size(), Zero),
     mass_(bodies.size(), GREAT),
     dtSubMax_(GREAT),
     X_(bodies.size()),
@@ -121,6 +185,17 @@ Foam::fbm::particleCollisions::particleCollisions
     minPairGap_(GREAT),
     minWallGap_(GREAT)
 {
+    forAll(bodies, i)
+    {
+        round_[i] = bodies[i].shape().isotropic();
+        allRound_ = allRound_ && round_[i];
+    }
+    if (!allRound_)
+    {
+        Info<< "fbm: collisions: non-round bodies: closest points by"
+            << " GJK/EPA on the support functions (convexDistance)" << nl;
+    }
+
     // Stiffest contact: each pair of (radius, mass) classes with its
     // reduced mass, each class against a wall. A body that does not
     // translate has an infinite mass. With more than maxClasses classes
@@ -136,9 +211,9 @@ Foam::fbm::particleCollisions::particleCollisions
     for (const body& b : bodies)
     {
         const scalar R = b.shape().radius();
-        const scalar m = b.translates() ? b.mass() : GREAT;
+        const scalar m = contactMass(b);
         Rmax = max(Rmax, R);
-        if (b.translates())
+        if (b.translates() || (m < GREAT))
         {
             anyMoving = true;
             mMin = min(mMin, m);
@@ -253,14 +328,124 @@ void Foam::fbm::particleCollisions::contactForces
         U_[i] = b.U();
         translates_[i] = b.translates();
     }
-    arrayForces(bodies, F);
+    arrayForces(bodies, F, torque_);
+}
+
+
+void Foam::fbm::particleCollisions::shapePair
+(
+    const PtrList<body>& bodies,
+    const label i,
+    const label j,
+    List<vector>& F,
+    List<vector>& T
+)
+{
+    const contactModel& law = *model_;
+    const body& bi = bodies[i];
+    const body& bj = bodies[j];
+
+    const convexDistance::result c
+    (
+        narrow_.distance
+        (
+            bi.shape(), bi.state().Q(), X_[i],
+            bj.shape(), bj.state().Q(), X_[j]
+        )
+    );
+    minPairGap_ = min(minPairGap_, c.gap);
+    if (c.gap > law.range())
+    {
+        return;
+    }
+
+    // Along the normal n (from i to j) at the contact point
+    const vector& n = c.normal;
+    const point pc(0.5*(c.pA + c.pB));
+    const vector ri(cmptMultiply(planeMask_, pc - X_[i]));
+    const vector rj(cmptMultiply(planeMask_, pc - X_[j]));
+    vector Fi(-law.pairForceAtGap(c.gap, R_[i], R_[j])*n);
+
+    if (dampingRatio_ > 0)
+    {
+        const scalar w = inverseMass(bi, i, ri, n) + inverseMass(bj, j, rj, n);
+        if (w > 0)
+        {
+            const scalar k = depth_*law.pairStiffness(R_[i], R_[j]);
+            const vector vi(U_[i] + (bi.omega() ^ ri));
+            const vector vj(U_[j] + (bj.omega() ^ rj));
+            Fi -=
+                (2*dampingRatio_*Foam::sqrt(k/w)/depth_)
+               *((vi - vj) & n)*n;
+        }
+    }
+
+    F[i] += Fi;
+    F[j] -= Fi;
+    T[i] += ri ^ Fi;
+    T[j] -= rj ^ Fi;
+}
+
+
+void Foam::fbm::particleCollisions::shapeWall
+(
+    const PtrList<body>& bodies,
+    const label i,
+    const label w,
+    const scalar d,
+    List<vector>& F,
+    List<vector>& T
+)
+{
+    const contactModel& law = *model_;
+    const body& b = bodies[i];
+
+    // The body's point nearest the wall: its support along the outward
+    // normal
+    const vector& nw = walls_.normals()[w];
+    const vector s(b.shape().support(b.state().Q(), nw));
+    const scalar gap = d - (nw & s);
+    minWallGap_ = min(minWallGap_, gap);
+    if (gap > 0.5*law.range())
+    {
+        return;
+    }
+
+    // The contact point: on a flat face (polygon, triSurface) the middle of
+    // its vertices within the range (a face on the wall touches at its
+    // middle, not at one corner)
+    const vector r
+    (
+        cmptMultiply
+        (
+            planeMask_,
+            b.shape().planeContact(b.state().Q(), nw, 0.5*law.range())
+          + 0.5*gap*nw
+        )
+    );
+    vector Fi(-law.wallForceAtGap(gap, R_[i])*nw);
+
+    if (dampingRatio_ > 0)
+    {
+        const scalar wi = inverseMass(b, i, r, nw);
+        if (wi > 0)
+        {
+            const scalar k = depth_*law.wallStiffness(R_[i]);
+            const vector v(U_[i] + (b.omega() ^ r));
+            Fi -= (2*dampingRatio_*Foam::sqrt(k/wi)/depth_)*(v & nw)*nw;
+        }
+    }
+
+    F[i] += Fi;
+    T[i] += r ^ Fi;
 }
 
 
 void Foam::fbm::particleCollisions::arrayForces
 (
     const PtrList<body>& bodies,
-    List<vector>& F
+    List<vector>& F,
+    List<vector>& T
 )
 {
     const contactModel& law = *model_;
@@ -268,6 +453,8 @@ void Foam::fbm::particleCollisions::arrayForces
 
     F.setSize(bodies.size());
     F = Zero;
+    T.setSize(bodies.size());
+    T = Zero;
 
     // Pairs
     if (bodies.size() > 1)
@@ -278,6 +465,11 @@ void Foam::fbm::particleCollisions::arrayForces
         {
             const label i = ij.first();
             const label j = ij.second();
+            if (!round_[i] || !round_[j])
+            {
+                shapePair(bodies, i, j, F, T);
+                continue;
+            }
             const vector Fij(law.pairForce(X_[i], R_[i], X_[j], R_[j]));
             F[i] += Fij;
             F[j] -= Fij;
@@ -329,6 +521,11 @@ void Foam::fbm::particleCollisions::arrayForces
             }
             if (d <= R + 0.5*range)
             {
+                if (!round_[i])
+                {
+                    shapeWall(bodies, i, w, d, F, T);
+                    continue;
+                }
                 minWallGap_ = min(minWallGap_, d - R);
                 const point Xw(walls_.image(w, X));
                 if (dampingRatio_ > 0)
@@ -347,6 +544,15 @@ void Foam::fbm::particleCollisions::arrayForces
     forAll(F, i)
     {
         F[i] = translates_[i] ? depth_*F[i] : vector::zero;
+    }
+    if (!allRound_)
+    {
+        forAll(T, i)
+        {
+            T[i] =
+                (!round_[i] && bodies[i].rotates())
+              ? depth_*T[i] : vector::zero;
+        }
     }
 }
 
@@ -410,8 +616,23 @@ void Foam::fbm::particleCollisions::move
         }
     };
 
+    // Non-round bodies: their rotation in the sub-steps, with the contact
+    // torque
+    auto kickRotation = [&](const List<vector>& T)
+    {
+        if (allRound_) return;
+        forAll(bodies, i)
+        {
+            if (!round_[i] && moves[i])
+            {
+                motion.angularSubKick(bodies[i], h, T[i]);
+            }
+        }
+    };
+
     List<vector> F(bodies.size(), Zero);
-    arrayForces(bodies, F);
+    List<vector>& T = torque_;
+    arrayForces(bodies, F, T);
     // The mean force is kept only once initMeanForce() asked for it
     const bool keepMean = (meanForce_.size() == bodies.size());
     if (keepMean)
@@ -421,12 +642,23 @@ void Foam::fbm::particleCollisions::move
     for (label step = 0; step < n; ++step)
     {
         kick(F);
+        kickRotation(T);
         forAll(X_, i)
         {
             if (moves[i]) X_[i] += dtSub*U_[i];
         }
+        if (!allRound_)
+        {
+            forAll(bodies, i)
+            {
+                if (!round_[i] && moves[i])
+                {
+                    motion.rotationDrift(bodies[i], dtSub);
+                }
+            }
+        }
 
-        arrayForces(bodies, F);
+        arrayForces(bodies, F, T);
         if (keepMean)
         {
             const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
@@ -437,13 +669,19 @@ void Foam::fbm::particleCollisions::move
         }
 
         kick(F);
+        kickRotation(T);
     }
 
     forAll(bodies, i)
     {
         if (!moves[i]) continue;
         body& b = bodies[i];
-        motion.endTranslationSubCycles(b, X_[i], U_[i], n, dtSub);
+        // The rotation of the round bodies after the sub-steps (that of
+        // the others ran in them)
+        motion.endTranslationSubCycles
+        (
+            b, X_[i], U_[i], round_[i] ? n : 0, dtSub
+        );
         motion.endSubCycles(b, dt);
     }
 }

@@ -186,6 +186,31 @@ Foam::vector Foam::fbm::contactModels::singhRepulsion::wallForce
 }
 
 
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::pairForceAtGap
+(
+    const scalar gap,
+    const scalar Ri,
+    const scalar Rj
+) const
+{
+    const scalar s = Ri + Rj;
+    const scalar D = max(s + gap, scalar(0));
+    return factor(D, s, epsP_, epsPOverlap_)*D;
+}
+
+
+Foam::scalar Foam::fbm::contactModels::singhRepulsion::wallForceAtGap
+(
+    const scalar gap,
+    const scalar Ri
+) const
+{
+    const scalar s = 2*Ri;
+    const scalar D = max(2*(Ri + gap), scalar(0));
+    return factor(D, s, epsW_, epsWOverlap_)*D;
+}
+
+
 Foam::scalar Foam::fbm::contactModels::singhRepulsion::pairStiffness
 (
     const scalar Ri,
