@@ -301,20 +301,10 @@ Foam::vector Foam::fbm::bodyShapes::polygon::support
 {
     const vector db(Q.T() & inPlane(d));
     const vector2D d2(db[axes_[0]], db[axes_[1]]);
-    label best = 0;
-    scalar hMax = -GREAT;
-    forAll(vertices_, k)
-    {
-        const scalar h = vertices_[k] & d2;
-        if (h > hMax)
-        {
-            hMax = h;
-            best = k;
-        }
-    }
+    const vector2D& v = supportPoint(vertices_, d2);
     vector pb(Zero);
-    pb[axes_[0]] = vertices_[best].x();
-    pb[axes_[1]] = vertices_[best].y();
+    pb[axes_[0]] = v.x();
+    pb[axes_[1]] = v.y();
     return Q & pb;
 }
 
@@ -328,25 +318,10 @@ Foam::vector Foam::fbm::bodyShapes::polygon::planeContact
 {
     const vector db(Q.T() & inPlane(d));
     const vector2D d2(db[axes_[0]], db[axes_[1]]);
-    scalar hMax = -GREAT;
-    for (const vector2D& v : vertices_)
-    {
-        hMax = max(hMax, v & d2);
-    }
-    vector2D sum(Zero);
-    scalar sumW = 0;
-    for (const vector2D& v : vertices_)
-    {
-        const scalar w = 1 - (hMax - (v & d2))/max(band, VSMALL);
-        if (w > 0)
-        {
-            sum += w*v;
-            sumW += w;
-        }
-    }
+    const vector2D m(bandMiddle(vertices_, d2, band));
     vector pb(Zero);
-    pb[axes_[0]] = sum.x()/sumW;
-    pb[axes_[1]] = sum.y()/sumW;
+    pb[axes_[0]] = m.x();
+    pb[axes_[1]] = m.y();
     return Q & pb;
 }
 

@@ -208,20 +208,7 @@ Foam::vector Foam::fbm::bodyShapes::triSurfaceShape::support
 {
     // The points of the faces (body frame): the support of their convex
     // hull, also for a surface that is not convex
-    const vector db(Q.T() & d);
-    const pointField& pts = surf_->localPoints();
-    label best = 0;
-    scalar hMax = -GREAT;
-    forAll(pts, k)
-    {
-        const scalar h = pts[k] & db;
-        if (h > hMax)
-        {
-            hMax = h;
-            best = k;
-        }
-    }
-    return Q & pts[best];
+    return Q & supportPoint(surf_->localPoints(), vector(Q.T() & d));
 }
 
 
@@ -232,25 +219,7 @@ Foam::vector Foam::fbm::bodyShapes::triSurfaceShape::planeContact
     const scalar band
 ) const
 {
-    const vector db(Q.T() & d);
-    const pointField& pts = surf_->localPoints();
-    scalar hMax = -GREAT;
-    for (const point& p : pts)
-    {
-        hMax = max(hMax, p & db);
-    }
-    vector sum(Zero);
-    scalar sumW = 0;
-    for (const point& p : pts)
-    {
-        const scalar w = 1 - (hMax - (p & db))/max(band, VSMALL);
-        if (w > 0)
-        {
-            sum += w*p;
-            sumW += w;
-        }
-    }
-    return Q & (sum/sumW);
+    return Q & bandMiddle(surf_->localPoints(), vector(Q.T() & d), band);
 }
 
 
