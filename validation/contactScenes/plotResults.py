@@ -13,8 +13,9 @@ per body in results.csv:
   radius) at the end; the landing time (first step with the lowest point
   within the range of the wall force); the settling time (from which
   |U| + |omega| R stays below 1 % of its largest value); the smallest gap
-  of the lowest point over the output steps; CPU (the solver's last
-  ExecutionTime).
+  of the lowest point over the output steps, and the smallest wall gap of
+  the scene over the collision sub-steps (summary.dat, all its bodies);
+  CPU (the solver's last ExecutionTime).
 
 Collisions (scenes headOn, oblique, dem), one row per run in
 collisions.csv: linear momentum P = sum m U and angular momentum about the
@@ -179,17 +180,19 @@ for scene, name, kind, dims, th0, label in restBodies:
         lo, hi = (gm, hi) if F > (2 - 1)*V*g else (lo, gm)
     gapLaw = 0.5*(lo + hi)
     land, settle = settleTimes(t, speed, gap)
+    summ = rows(os.path.join(case, "postProcessing", "fbmBodies", "0", "summary.dat"))
+    wallSub = summ["minWallGap"][summ["minWallGap"] < 1e14].min()
     results.append({
         "scene": scene, "body": name, "cells": cells(case),
         "t_end": t[-1], "t_land": land, "t_settle": settle,
-        "y_final": y[-1], "y_flat": restY, "gap_final": gap[-1], "gap_law": gapLaw, "gap_min": gap.min(),
+        "y_final": y[-1], "y_flat": restY, "gap_final": gap[-1], "gap_law": gapLaw, "gap_min": gap.min(), "wallGap_min_scene": wallSub,
         "tilt_deg": abs(tilt[-1]), "longAxisTilt_deg": longTilt, "face_down": face,
         "U_final": U[-1], "omegaR_final": w[-1]*R, "speed_max": speed.max(),
         "cpu_s": cpu(case)})
     hist[(scene, name)] = (label, t, y, tilt, U, w*R, gap)
 
 cols = ["scene", "body", "cells", "t_end", "t_land", "t_settle", "y_final", "y_flat",
-        "gap_final", "gap_law", "gap_min", "tilt_deg", "longAxisTilt_deg", "face_down",
+        "gap_final", "gap_law", "gap_min", "wallGap_min_scene", "tilt_deg", "longAxisTilt_deg", "face_down",
         "U_final", "omegaR_final", "speed_max", "cpu_s"]
 with open("results.csv", "w", newline="") as f:
     wr = csv.writer(f)
