@@ -1,40 +1,41 @@
 #!/usr/bin/python3
 """Analyse the contact scenes in runs/ (see Allrun).
 
-Bodies coming to rest on the floor (scenes drop2D, drop3D, stl), one row
-per body in results.csv:
+Bodies coming to rest on the floor (scenes drop2D*, drop3D, stl*), one
+row per body in results.csv:
   the body's height (centre y) and the gap of its lowest point above the
   floor (y less the support of the shape along -y, from its orientation);
   its tilt from the stable orientation: in 2D the angle of the long axis
   (the body's x axis) from the floor; for the box the angle of the body
-  axis nearest the vertical from the vertical (which face is down is named);
+  axis nearest the vertical from the vertical (the face down is named);
   for the ellipsoid the angle of its shortest axis from the vertical (and
   of its long axis from the floor); |U| and |omega| R (R the bounding
   radius) at the end; the landing time (first step with the lowest point
   within the range of the wall force); the settling time (from which
   |U| + |omega| R stays below 1 % of its largest value); the smallest gap
   of the lowest point over the output steps, and the smallest wall gap of
-  the scene over the collision sub-steps (summary.dat, all its bodies);
+  the scene over the contact sub-steps (summary.dat, all its bodies);
+  the gap at which the wall law carries the submerged weight (gap_law);
   CPU (the solver's last ExecutionTime).
 
-Collisions (scenes headOn, oblique, dem), one row per run in
+Collisions (scenes headOn*, oblique, dem), one row per run in
 collisions.csv: linear momentum P = sum m U and angular momentum about the
 fixed point O = (0, 0) (the corner of the box), L = sum m (X - O) x U +
 I omega (z component), before (the first output step, before contact) and
-after (the last), and the kinetic energy ratio after/before (also less
-the fluid's work, from F and T with the velocities at the step's middle). The fbmFoam
-runs have a fluid 500,000 times lighter than the bodies: its force and
-torque (the body files' F and T) are integrated over the run (the impulse
-the fluid gave: the force of a step acts over the next one, as the
-explicit coupling moves the bodies with the last step's force; its moment
-about O with the lever arm at the middle of that step) and shown beside
-the change; what the fluid does not account for is the contacts' share. The dem rows (Test-convexDistance,
-no fluid) print only the largest |dP| and |dL| over the run and the energy
-ratio. Masses: rho pi a b times the mesh depth 0.1 (2D), rho 4/3 pi a b c
-(3D); I = m (a^2 + b^2)/4 about the ellipse's centre.
+after (the last), and the kinetic energy ratio after/before. The fbmFoam
+runs have a fluid 250,000 to 1,000,000 times lighter than the bodies: its
+force and torque (the body files' F and T) are integrated over the run
+(the force of a step acts over the next one, as the explicit coupling
+moves the bodies with the last step's force; its moment about O with the
+lever arm, and its work with the velocities, at the middle of that step)
+and shown beside the change; what the fluid does not account for is the
+contacts' share. The dem rows (Test-convexDistance, no fluid): it prints
+only the largest |dP| and |dL| (about its origin) over the run and the
+energy ratio. Masses: rho pi a b times the mesh depth 0.1 (2D),
+rho 4/3 pi a b c (3D); I = m (a^2 + b^2)/4 about the ellipse's centre.
 
-Writes results.csv, collisions.csv, histories are read from the runs;
-table.md, settling.png, collisions.png.
+Writes results.csv, collisions.csv, table.md, settling.png and
+collisions.png.
 """
 import csv
 import math
