@@ -105,6 +105,7 @@ restBodies = [
     ("drop2D-steep", "ellipse", "ell2D", (0.15, 0.075), -4*math.pi/9, "ellipse from -80 deg"),
     ("drop3D", "ellipsoid", "ell3D", (0.15, 0.1, 0.09), None, "ellipsoid 0.15, 0.1, 0.09"),
     ("drop3D", "box", "box3D", (0.3, 0.2, 0.12), None, "triSurface box 0.3 x 0.2 x 0.12"),
+    ("ellipsoid10", "ellipsoid", "ell3D", (0.15, 0.1, 0.09), None, "ellipsoid alone, to t = 10"),
     ("stl", "box", "box3D", (0.3, 0.2, 0.12), None, "stlSettling box (alone)"),
     ("stl-L2", "box", "box3D", (0.3, 0.2, 0.12), None, "stlSettling box, level 2"),
 ]
@@ -337,7 +338,7 @@ with open("table.md", "w") as f:
 if hist:
     fig, ax = plt.subplots(3, 2, figsize=(11, 9), sharex="col")
     colour = {"rectangle": "C0", "ellipse": "C1", "ellipsoid": "C2", "box": "C3"}
-    style = {"drop2D-fine": "--", "stl-L2": "--", "drop2D-steep": "-."}
+    style = {"drop2D-fine": "--", "stl-L2": "--", "drop2D-steep": "-.", "ellipsoid10": ":"}
     for (scene, name), (label, t, y, tilt, U, wR, gap) in hist.items():
         col = 0 if scene.startswith("drop2D") else 1
         c = "C4" if scene.startswith("stl") else colour[name]
