@@ -25,10 +25,12 @@ fewer than three crossings); the last four swings of theta (the largest
 |theta| between successive crossings of 0) and the ratio of the last two
 (peak_ratio: > 1 a growing swing, < 1 a decaying one). The
 mode: "oscillating" when x swings by more than 0.1 a or theta by more than
-5 degrees (half range) and the swing does not decay (peak_ratio >= 0.8);
-else "horizontal" when |mean theta| < 5 degrees or the swing about it
-decays ("damped swing" added while the half range is still above 1
-degree), "vertical" (|theta| > 85) or "inclined". CPU:
+5 degrees (half range) and the swing holds (peak_ratio >= 0.95);
+"undecided" when it swings so and decays slowly (0.8 <= peak_ratio <
+0.95: the channel is too short to tell); else "horizontal" when |mean
+theta| < 5 degrees or the swing about it decays fast ("damped swing" added
+while the half range is still above 1 degree), "vertical" (|theta| > 85)
+or "inclined". CPU:
 the solver's last ExecutionTime (each stage's, summed, for the body-fitted
 runs, plus reReference.py's CPU).
 
@@ -38,8 +40,18 @@ it (theta_overshoot) and the largest settling velocity Umax (before the
 cut). A run that did not reach its endTime is a row marked failed and is
 left out of the chart.
 
-Writes results.csv, history.csv (every run's history, 0.01 s apart, up to
-the cut), table.md and settling.png.
+For a body-fitted run t_sound is where its flow breaks down on the
+morphing mesh (the first step after t = 0.05 whose largest Courant number
+is more than twice the smallest of the 0.02 s before it; the steps are
+capped, so it changes slowly while the run is sound); the chart shows it up
+to there, and comparison.csv gives, at each viscosity with a body-fitted
+run, every fbmFoam and body-fitted run (not the -explicit variant) every
+0.05 s up to the earliest t_sound (or end) of them. Runs *-short stop at
+t = 0.4 (the first turn): no terminal values in table.md.
+
+Only runs that have been run to their end (runs/RUN/runDone, written by
+Allrun) are analysed. Writes results.csv, history.csv (every run's history, 0.01 s apart, up to
+the cut), comparison.csv, table.md and settling.png.
 """
 import csv
 import glob
@@ -94,7 +106,7 @@ def fbmHistory(case):
     if coupling == "explicit":
         coupling += ", addedMassCoeff " + parameter(
             case, "addedMassCoeff", "constant/fbmProperties")
-    return t, x, y, uy, theta, cpu, coupling
+    return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 
 vec = r"\(([^()]*)\)"
@@ -116,30 +128,45 @@ def bodyFittedHistory(case):
             c = [float(v) for v in c.group(1).split()]
             q = [float(v) for v in q.group(1).split()]
             u = [float(v) for v in u.group(1).split()]
+            co = re.search(r"Courant Number mean: \S+ max: (\S+)", block)
+            co = float(co.group(1)) if co else float("nan")
             # a restarted stage repeats no step: a later one overwrites
-            rows[t] = (c[0], c[1], u[1], math.degrees(math.atan2(q[3], q[0])))
+            rows[t] = (c[0], c[1], u[1],
+                       math.degrees(math.atan2(q[3], q[0])), co)
     f = os.path.join(case, "log.reReference")
     if os.path.exists(f):
         for line in open(f):
             cpu += float(line.split()[-1])
     t = np.array(sorted(rows))
     d = np.array([rows[k] for k in t])
+    # Where the flow on the morphing mesh breaks down: the first step after
+    # t = 0.05 whose largest Courant number is more than twice the smallest
+    # of the 0.02 s before it (the steps are capped, so the Courant number
+    # changes slowly while the run is sound)
+    co = d[:, 4]
+    tSound = t[-1]
+    for i in np.nonzero(t > 0.05)[0]:
+        before = co[(t >= t[i] - 0.02) & (t < t[i])]
+        if len(before) and co[i] > 2*np.min(before):
+            tSound = t[i]
+            break
     return (t, d[:, 0], d[:, 1], d[:, 2], theta0 + d[:, 3], cpu,
-            "sixDoF (Newmark), body-fitted")
+            "sixDoF (Newmark), body-fitted", tSound)
 
 
 def analyse(run):
     case = os.path.join("runs", run)
     if run.startswith("fbm-"):
-        t, x, y, uy, theta, cpu, coupling = fbmHistory(case)
+        t, x, y, uy, theta, cpu, coupling, tSound = fbmHistory(case)
         solver = "fbmFoam"
     else:
-        t, x, y, uy, theta, cpu, coupling = bodyFittedHistory(case)
+        t, x, y, uy, theta, cpu, coupling, tSound = bodyFittedHistory(case)
         solver = "pimpleFoam"
     nu = float(parameter(case, "nu"))
     level = int(parameter(case, "level"))
     theta = wrap(theta)
     yEnd = y[-1]
+    tEnd = t[-1]
     status = os.path.join(case, "runStatus")
     if os.path.exists(status):
         ended = open(status).read().strip() == "endTime"
@@ -166,8 +193,11 @@ def analyse(run):
     ext = np.array([i + np.argmax(np.abs(theta[i:j]))
                     for i, j in zip(cr[:-1], cr[1:])], dtype=int)
     ratio = peaks[-1]/peaks[-2] if len(peaks) >= 2 else float("nan")
-    if (xAmp > 0.1*a or thAmp > 5) and not ratio < 0.8:
+    swinging = xAmp > 0.1*a or thAmp > 5
+    if swinging and not ratio < 0.95:
         mode = "oscillating"
+    elif swinging and not ratio < 0.8:
+        mode = "undecided (swing decaying slowly)"
     elif abs(thMean) < 5 or (ratio < 0.8 and abs(thMean) < 5 + thAmp):
         mode = "horizontal" + (" (damped swing)" if thAmp > 1 else "")
     elif abs(thMean) > 85:
@@ -187,7 +217,8 @@ def analyse(run):
         if len(ext):
             over = theta[ext[0]]
     row = dict(run=run, solver=solver, coupling=coupling, nu=nu,
-               level=level, cells=cells(case), t_cut=t[-1], y_end=yEnd,
+               level=level, cells=cells(case), t_end=tEnd, t_sound=tSound,
+               t_cut=t[-1], y_end=yEnd,
                window_from=t[-1]*(1 - window), Ut=Ut, Re_2a=Ut*2*a/nu,
                Re_a=Ut*a/nu, theta_mean=thMean, theta_amp=thAmp,
                x_mean=xm, x_offset_a=(xm - xMid)/a, x_amp=xAmp,
@@ -196,11 +227,11 @@ def analyse(run):
                peak_ratio=ratio, t_theta0=t0, theta_overshoot=over,
                Umax=np.max(-uy), mode=mode,
                ended="yes" if ended else "no", cpu_s=cpu)
-    return row, (t, x, y, uy, theta)
+    return row, (t, x, y, uy, theta, tSound)
 
 
 runs = sorted(os.path.basename(c) for c in glob.glob("runs/*")
-              if os.path.isdir(c) and (
+              if os.path.exists(os.path.join(c, "runDone")) and (
                   glob.glob(os.path.join(c, "postProcessing/fbmBodies/0/ellipse.dat"))
                   or glob.glob(os.path.join(c, "log.pimpleFoam.*"))))
 rows, hist = [], {}
@@ -213,7 +244,7 @@ for run in runs:
     rows.append(row)
     hist[run] = h
 
-fmt = dict(nu="{:g}", t_cut="{:.4g}", y_end="{:.4f}", window_from="{:.4g}",
+fmt = dict(nu="{:g}", t_end="{:.4g}", t_sound="{:.4g}", t_cut="{:.4g}", y_end="{:.4f}", window_from="{:.4g}",
            Ut="{:.4f}", Re_2a="{:.2f}", Re_a="{:.2f}", theta_mean="{:.2f}",
            theta_amp="{:.2f}", x_mean="{:.4f}", x_offset_a="{:.3f}",
            x_amp="{:.4f}", x_amp_a="{:.3f}", period="{:.3f}",
@@ -231,17 +262,44 @@ with open("results.csv", "w", newline="") as f:
 with open("history.csv", "w", newline="") as f:
     wr = csv.writer(f)
     wr.writerow(["run", "t", "x", "y", "Uy", "theta"])
-    for run, (t, x, y, uy, theta) in hist.items():
+    for run, (t, x, y, uy, theta, ts) in hist.items():
         for tt in np.arange(0, t[-1] + 1e-9, 0.01):
             i = min(np.searchsorted(t, tt), len(t) - 1)
             wr.writerow([run, "%.2f" % tt, "%.5f" % x[i], "%.5f" % y[i],
                          "%.5f" % uy[i], "%.3f" % theta[i]])
+
+# The solvers side by side at the same times: at each viscosity that has a
+# body-fitted run (the -explicit variant left out), every fbmFoam and
+# body-fitted run, every 0.05 s up to the earliest t_sound of them
+with open("comparison.csv", "w", newline="") as f:
+    wr = csv.writer(f)
+    wr.writerow(["run", "t", "x", "y", "U", "theta"])
+    for nuText in sorted({r.split("-")[1] for r in hist
+                          if r.startswith("bodyFitted-")}):
+        group = [r for r in hist if r.split("-")[1] == nuText
+                 and not r.endswith("-explicit")]
+        tMax = min(min(hist[r][5], hist[r][0][-1]) for r in group)
+        for run in group:
+            t, x, y, uy, theta, ts = hist[run]
+            for tt in np.arange(0.05, tMax + 1e-9, 0.05):
+                xi = lambda v: np.interp(tt, t, v)
+                wr.writerow([run, "%.2f" % tt, "%.4f" % xi(x),
+                             "%.4f" % xi(y), "%.4f" % -xi(uy),
+                             "%.2f" % xi(theta)])
 
 with open("table.md", "w") as f:
     f.write("| run | coupling | cells | U_t | Re (2a) | theta [deg] "
             "| x - L/2 [a] | x swing [a] | period | mode | CPU [s] |\n")
     f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
     for r in rows:
+        if r["ended"] == "no" or r["run"].endswith("-short"):
+            note = (r["mode"] if r["ended"] == "no" else
+                    "the first turn only (endTime %.3g)" % r["t_end"])
+            f.write("| %s | %s | %s | - | - | - | - | - | - | %s; sound to "
+                    "t = %.3g | %.0f |\n" % (
+                        r["run"], r["coupling"], f"{r['cells']:,}",
+                        note, r["t_sound"], r["cpu_s"]))
+            continue
         f.write("| %s | %s | %s | %.3f | %.1f | %.1f ± %.1f | %.2f | %.2f "
                 "| %s | %s | %.0f |\n" % (
                     r["run"], r["coupling"], f"{r['cells']:,}", r["Ut"],
@@ -254,9 +312,12 @@ with open("table.md", "w") as f:
 fig, ax = plt.subplots(1, 3, figsize=(14, 5.5),
                        gridspec_kw=dict(width_ratios=[1, 2, 2]))
 failed = [r["run"] for r in rows if r["mode"].startswith("failed")]
-for run, (t, x, y, uy, theta) in hist.items():
-    if run in failed:
+for run, (t, x, y, uy, theta, ts) in hist.items():
+    if run.endswith("-explicit"):
         continue
+    # body-fitted runs: up to the breakdown of the flow (t_sound)
+    k = t <= ts
+    t, x, y, uy, theta = t[k], x[k], y[k], uy[k], theta[k]
     style = "-" if run.startswith("fbm-") else "--"
     ax[0].plot(x, y, style, lw=1, label=run)
     ax[1].plot(t, theta, style, lw=1, label=run)
@@ -273,7 +334,7 @@ ax[1].set_title("orientation (0: broad side down)")
 ax[2].set_xlabel("t [s]")
 ax[2].set_ylabel("settling velocity -U_y [cm/s]")
 modes = "; ".join(f"{r['run']}: {r['mode']}" for r in rows
-                  if r["run"] not in failed)
+                  if r["run"].startswith("fbm-"))
 ax[2].set_title("settling velocity")
 ax[1].legend(fontsize=7)
 fig.suptitle("Ellipse a/b = 2, rho_s/rho_f = 1.1, 2a/L = 0.25 (after Xia "
