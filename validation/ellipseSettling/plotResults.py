@@ -308,12 +308,12 @@ with open("table.md", "w") as f:
                     "" if math.isnan(r["period"]) else "%.2f" % r["period"],
                     r["mode"], r["cpu_s"]))
 
-# Chart: trajectory, angle and settling velocity against time
-fig, ax = plt.subplots(1, 3, figsize=(14, 5.5),
-                       gridspec_kw=dict(width_ratios=[1, 2, 2]))
-failed = [r["run"] for r in rows if r["mode"].startswith("failed")]
+# Chart: trajectory, angle and settling velocity against time, and the
+# first turn of the runs at the viscosity of the body-fitted runs
+fig, ax = plt.subplots(1, 4, figsize=(18, 5.5),
+                       gridspec_kw=dict(width_ratios=[1, 2, 2, 2]))
 for run, (t, x, y, uy, theta, ts) in hist.items():
-    if run.endswith("-explicit"):
+    if run.endswith("-explicit") or run.endswith("-short"):
         continue
     # body-fitted runs: up to the breakdown of the flow (t_sound)
     k = t <= ts
@@ -333,12 +333,31 @@ ax[1].set_ylabel("angle of the major axis to the horizontal [deg]")
 ax[1].set_title("orientation (0: broad side down)")
 ax[2].set_xlabel("t [s]")
 ax[2].set_ylabel("settling velocity -U_y [cm/s]")
-modes = "; ".join(f"{r['run']}: {r['mode']}" for r in rows
-                  if r["run"].startswith("fbm-"))
 ax[2].set_title("settling velocity")
 ax[1].legend(fontsize=7)
+# The first turn: every run with a body-fitted partner, up to its t_sound
+cmp = {}
+for row in csv.DictReader(open("comparison.csv")):
+    cmp.setdefault(row["run"], []).append(row)
+tw = ax[3].twinx()
+for run, rs in cmp.items():
+    style = "-" if run.startswith("fbm-") else "--"
+    tt = [float(r["t"]) for r in rs]
+    ax[3].plot(tt, [float(r["theta"]) for r in rs], style + "o", ms=3,
+               lw=1, label=run)
+    tw.plot(tt, [float(r["U"]) for r in rs], style + "s", ms=3, lw=1,
+            alpha=0.5)
+ax[3].set_xlabel("t [s]")
+ax[3].set_ylabel("angle [deg] (circles)")
+tw.set_ylabel("settling velocity [cm/s] (squares, faint)")
+ax[3].set_title("fbmFoam against body-fitted: the first turn")
+ax[3].legend(fontsize=7, loc="lower left")
+modes = "; ".join(f"{r['run']}: {r['mode']}" for r in rows
+                  if r["run"].startswith("fbm-")
+                  and not r["run"].endswith("-short"))
 fig.suptitle("Ellipse a/b = 2, rho_s/rho_f = 1.1, 2a/L = 0.25 (after Xia "
-             "et al. 2009). Mode found: " + modes, fontsize=8)
+             "et al. 2009; their regime map could not be retrieved, "
+             "README.md). Mode found: " + modes, fontsize=8)
 fig.tight_layout()
 fig.savefig("settling.png", dpi=110)
 print(open("table.md").read())
