@@ -1,17 +1,21 @@
 #!/usr/bin/python3
 """Make the mesh of the latest time the new reference of the mesh motion.
 
-Usage: ./reReference.py [caseDir]        (ascii writeFormat)
+Usage: ./reReference.py [caseDir [patch sizeKey]]     (ascii writeFormat)
+  patch:   the body's patch (default disk)
+  sizeKey: the caseParameters entry of the body's half height for the gap
+           (default radius; the settling ellipse of
+           validation/ellipseSettling/bodyFitted uses ellipse a)
 
 displacementLaplacian moves the points to points0 + pointDisplacement, with
-pointDisplacement solved from the disk's displacement since points0; the
-sixDoFRigidBodyDisplacement condition gives the disk's points as the rigid
+pointDisplacement solved from the body's displacement since points0; the
+sixDoFRigidBodyDisplacement condition gives the body's points as the rigid
 motion of its initialPoints since (centreOfMass, initialOrientation). At the
 latest time T this script, with the solver stopped:
 
 - writes T/polyMesh/points0 = T/polyMesh/points (the motion solver reads
   points0 from the latest time that has one);
-- in T/pointDisplacement sets initialPoints to the disk's current points
+- in T/pointDisplacement sets initialPoints to the body's current points
   (initialPoints + value), centreOfMass (the initial one) and
   initialOrientation to the current centreOfRotation and orientation, the
   constraints' centreOfRotation to the current one too, and every
@@ -20,8 +24,9 @@ latest time T this script, with the solver stopped:
 
 The motion state (velocity, acceleration, angular momentum, torque) is
 untouched, so the body goes on as before; only the mesh solution restarts
-from the current, deformed mesh. Prints the time, the disk centre x y, its
-gap to the bottom wall (y - R) and this script's CPU time [s].
+from the current, deformed mesh. Prints the time, the body's centre x y, its
+gap to the bottom wall (y - R, R the sizeKey entry) and this script's CPU
+time [s].
 """
 import os
 import re
@@ -29,6 +34,8 @@ import sys
 import time
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
+patch = sys.argv[2] if len(sys.argv) > 2 else "disk"
+sizeKey = sys.argv[3] if len(sys.argv) > 3 else "radius"
 
 
 def latestTime():
@@ -94,12 +101,13 @@ if n != 1:
 with open(os.path.join(tdir, "polyMesh", "points0"), "w") as f:
     f.write(points0)
 
-# pointDisplacement: the disk's reference is its current position
+# pointDisplacement: the body's reference is its current position
 fname = os.path.join(tdir, "pointDisplacement")
 text = open(fname).read()
-m = re.search(r"\n    disk\n    \{\n(.*?)\n    \}\n", text, re.S)
+m = re.search(r"\n    " + re.escape(patch) + r"\n    \{\n(.*?)\n    \}\n",
+              text, re.S)
 if m is None:
-    sys.exit("pointDisplacement: no disk patch")
+    sys.exit("pointDisplacement: no %s patch" % patch)
 disk = m.group(1)
 mInit, initial = vectorList("initialPoints", disk)
 mValue, value = vectorList("value", disk)
@@ -124,6 +132,6 @@ if os.path.exists(fname):
     open(fname, "w").write(text)
 
 x, y, z = (float(v) for v in centre.split())
-R = float(re.search(r"^radius\s+([^;]+);", open(
+R = float(re.search(r"^" + re.escape(sizeKey) + r"\s+([^;]+);", open(
     os.path.join(case, "system", "caseParameters")).read(), re.M).group(1))
 print(f"{T} {x:.9g} {y:.9g} {y - R:.9g} {time.process_time():.2f}")
