@@ -51,6 +51,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "bodySystem.H"
+#include "predictorExtrapolation.H"
 #include "startTimeCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
