@@ -36,7 +36,8 @@ rhos = sorted({float(r['rho_s']) for r in rows}, reverse=True)
 cell = {(float(r['rho_s']), r['Ca'], float(r['dt'])): r for r in rows}
 
 with open(os.path.join(here, 'mapTable.md'), 'w') as f:
-    f.write('Settling particle, nu = 0.1, level 3 (R/h = 3), fixed dt, to '
+    f.write('Settling particle (rho_s/rho_f < 1: rising), nu = 0.1, '
+            'level 3 (R/h = 3), fixed dt, to '
             't = 0.3: s = stable, o = oscillating, d = diverged (at t)\n\n')
     for c in Cas:
         f.write('%s\n\n| rho_s/rho_f | ' % title(c)
@@ -70,14 +71,16 @@ for ax, c in zip(axes, Cas):
     for s, col in colour.items():
         ax.scatter([], [], c=col, label=s,
                    marker='x' if s == 'diverged' else 'o')
-    ax.set_xscale('log')
+    # rho_s/rho_f - 1 < 0: a light disk rising
+    ax.set_xscale('symlog', linthresh=0.01)
+    ax.axvline(0, color='k', lw=0.8)
     ax.set_yscale('log')
-    ax.set_xlabel('rho_s/rho_f - 1')
+    ax.set_xlabel('rho_s/rho_f - 1 (< 0: rising)')
     ax.set_title(title(c), fontsize=10)
     ax.grid(True, which='both', alpha=0.3)
 axes[0].set_ylabel('time step dt')
 axes[-1].legend(loc='center left', bbox_to_anchor=(1.02, 0.5), fontsize=8)
-fig.suptitle('Settling disk (R/h = 3): where the couplings fail')
+fig.suptitle('Settling / rising disk (R/h = 3): where the couplings fail')
 fig.tight_layout()
 fig.savefig(os.path.join(here, 'map.png'), dpi=120)
 print('wrote mapTable.md, map.png')
