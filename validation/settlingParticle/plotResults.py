@@ -85,12 +85,13 @@ TOLERANCE = {0.1: 3.0, 0.01: 5.0}
 # Records closer than this to a wall are left out of Re_max
 WALL_GAP = DIAMETER
 
-RESULTS_HEADER = ["case", "nu", "rho_s", "cells", "Re_max", "Re_f_max", "wall_s"]
+RESULTS_HEADER = ["case", "nu", "rho_s", "cells", "Re_max", "Re_f_max", "wall_s",
+                  "cpu_s"]
 INFO_HEADER = [
     "case", "addedMassCoeff", "maxSpeed", "exit", "end", "t_end", "bottom_gap_end_d",
     "t_max", "y_max", "bottom_gap_max_d", "Re_max_all", "t_max_all",
     "bottom_gap_max_all_d",
-    "osc_pct", "t_osc", "x_drift_max", "omega_max",
+    "osc_pct", "t_osc", "x_drift_max", "omega_max", "drag_noise_pct",
 ]
 
 
@@ -117,7 +118,7 @@ def readCsv(path):
 def readHistory(run):
     """Columns of particle.dat: t, x, y, Ux, Uy, wz (lists)"""
     path = os.path.join(run, "postProcessing", "fbmBodies", "0", "particle.dat")
-    h = {k: [] for k in ("t", "x", "y", "Ux", "Uy", "wz")}
+    h = {k: [] for k in ("t", "Fy", "x", "y", "Ux", "Uy", "wz")}
     with open(path) as f:
         for line in f:
             if line.startswith("#") or not line.strip():
@@ -125,8 +126,8 @@ def readHistory(run):
             v = [float(s) for s in line.split()]
             if len(v) < 16:
                 continue
-            for k, i in (("t", 0), ("x", 7), ("y", 8), ("Ux", 10), ("Uy", 11),
-                         ("wz", 15)):
+            for k, i in (("t", 0), ("Fy", 2), ("x", 7), ("y", 8), ("Ux", 10),
+                         ("Uy", 11), ("wz", 15)):
                 h[k].append(v[i])
     h["speed"] = [math.hypot(u, v) for u, v in zip(h["Ux"], h["Uy"])]
     h["gap"] = [min(x - RADIUS, WIDTH - x - RADIUS, y - RADIUS, HEIGHT - y - RADIUS)
@@ -211,6 +212,20 @@ def oscillation(h, n):
     return best, tBest
 
 
+def dragNoise(h, n, uMax, half=10):
+    """Grid-crossing noise of the drag near terminal speed: the rms of Fy
+    about its centred running mean over 2 half + 1 records, over the
+    records of [0, n) with a speed of at least 98 % of uMax, in % of the
+    mean drag there ('' when fewer than 2 half + 1 such records)"""
+    Fy = h["Fy"]
+    idx = [i for i in range(half, n - half) if h["speed"][i] >= 0.98*uMax]
+    if len(idx) < 2*half + 1:
+        return ""
+    dev = [Fy[i] - sum(Fy[i - half:i + half + 1])/(2*half + 1) for i in idx]
+    mean = sum(abs(Fy[i]) for i in idx)/len(idx)
+    return "%.3g" % (100*math.sqrt(sum(d*d for d in dev)/len(dev))/mean)
+
+
 def fbmSetting(run, key, default=""):
     """A top-level setting of the run's constant/fbmProperties (as written)"""
     value = lastMatch(os.path.join(run, "constant", "fbmProperties"),
@@ -232,11 +247,13 @@ def collect(runsDir=RUNS, suffix=""):
         uMax = h["speed"][iMax]
         cells = lastMatch(os.path.join(path, "log.blockMesh"), r"^\s*nCells:\s*(\d+)")
         wall = lastMatch(os.path.join(path, "log.fbmFoam"), r"ClockTime = ([0-9.]+) s")
+        cpu = lastMatch(os.path.join(path, "log.fbmFoam"), r"ExecutionTime = ([0-9.]+) s")
         status, end = endOfRun(path)
         osc, tOsc = oscillation(h, n)
         results.append([
             name, "%g" % nu, "%g" % rho, cells or "",
             "%.4g" % (rho*uMax*DIAMETER/mu), "%.4g" % (uMax*DIAMETER/nu), wall or "",
+            "%.1f" % float(cpu) if cpu else "",
         ])
         info.append([
             name, fbmSetting(path, "addedMassCoeff", "0"),
@@ -249,6 +266,7 @@ def collect(runsDir=RUNS, suffix=""):
             "%.2g" % (100*osc/uMax), "%.3g" % tOsc,
             "%.2g" % max(abs(x - 0.5*WIDTH) for x in h["x"][:n]),
             "%.2g" % max(abs(w) for w in h["wz"][:n]),
+            dragNoise(h, n, uMax),
         ])
     for file, header, rows in (("results%s.csv" % suffix, RESULTS_HEADER, results),
                                ("runInfo%s.csv" % suffix, INFO_HEADER, info)):
