@@ -609,6 +609,22 @@ void Foam::fbm::bodySystem::constrain(fvMatrix<vector>& UEqn) const
 }
 
 
+void Foam::fbm::bodySystem::constrainPressureStep
+(
+    volScalarField& rAU,
+    volVectorField& HbyA,
+    const volScalarField& p
+)
+{
+    if (bodies_.empty())
+    {
+        return;
+    }
+    phaseTimes::scope forcingTime(times_, phaseTimes::forcing);
+    coupling_->constrainPressureStep(rAU, HbyA, p);
+}
+
+
 void Foam::fbm::bodySystem::setPrescribedMotions(const bool step)
 {
     // Exact positions and velocities at the current time, whatever the
@@ -707,6 +723,11 @@ bool Foam::fbm::bodySystem::correctForces
     if (bodies_.empty())
     {
         return true;
+    }
+
+    {
+        phaseTimes::scope forcingTime(times_, phaseTimes::forcing);
+        coupling_->beforeForces(U, p);
     }
 
     List<vector> force(bodies_.size(), Zero);

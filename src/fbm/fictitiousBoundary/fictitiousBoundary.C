@@ -431,6 +431,23 @@ void Foam::fbm::fictitiousBoundary::update()
 }
 
 
+void Foam::fbm::fictitiousBoundary::updateVelocity()
+{
+    vectorField& Us = Us_.primitiveFieldRef();
+    const scalarField& id = bodyID_;
+    const vectorField& C = mesh_.C();
+    for (const label celli : activeCells_)
+    {
+        const label bi = label(id[celli]);
+        if (bi >= 0)
+        {
+            Us[celli] = bodies_[bi].velocityAt(C[celli]);
+        }
+    }
+    Us_.correctBoundaryConditions();
+}
+
+
 void Foam::fbm::fictitiousBoundary::constrain
 (
     fvMatrix<vector>& UEqn,

@@ -39,4 +39,51 @@ Foam::fbm::couplingModel::couplingModel
 {}
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::fbm::couplingModel::rejectContactProjection() const
+{
+    if (dict_.getOrDefault<bool>("projectContacts", false))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "projectContacts yes with coupling " << type() << " in "
+            << dict_.name() << nl
+            << "    The contact forces go into the flow solve of coupling"
+            << " rigidProjection only: remove projectContacts or set it to"
+            << " no" << exit(FatalIOError);
+    }
+    if (dict_.found("contactRelaxation"))
+    {
+        dict_.getCheck<scalar>
+        (
+            "contactRelaxation", [](scalar b){ return b > 0 && b <= 1; }
+        );
+        FatalIOErrorInFunction(dict_)
+            << "contactRelaxation without projectContacts in "
+            << dict_.name() << nl
+            << "    It relaxes the contact forces that projectContacts puts"
+            << " into the flow solve of coupling rigidProjection: remove it"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fbm::couplingModel::rejectAddedMassCoeff() const
+{
+    const scalar Ca = dict_.getCheckOrDefault<scalar>
+    (
+        "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
+    );
+    if (Ca != 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "addedMassCoeff " << Ca << " with coupling " << type()
+            << " in " << dict_.name() << nl
+            << "    This coupling carries the added mass in the flow solve;"
+            << " addedMassCoeff is for the explicit coupling only: remove it"
+            << " or set it to 0" << exit(FatalIOError);
+    }
+}
+
+
 // ************************************************************************* //

@@ -79,28 +79,7 @@ Foam::fbm::couplingModels::explicitForce::explicitForce
         )
     )
 {
-    if (dict.getOrDefault<bool>("projectContacts", false))
-    {
-        FatalIOErrorInFunction(dict)
-            << "projectContacts yes with coupling " << type() << " in "
-            << dict.name() << nl
-            << "    The contact forces go into the flow solve of coupling"
-            << " rigidProjection only: remove projectContacts or set it to"
-            << " no" << exit(FatalIOError);
-    }
-    if (dict.found("contactRelaxation"))
-    {
-        dict.getCheck<scalar>
-        (
-            "contactRelaxation", [](scalar b){ return b > 0 && b <= 1; }
-        );
-        FatalIOErrorInFunction(dict)
-            << "contactRelaxation without projectContacts in "
-            << dict.name() << nl
-            << "    It relaxes the contact forces that projectContacts puts"
-            << " into the flow solve of coupling rigidProjection: remove it"
-            << exit(FatalIOError);
-    }
+    rejectContactProjection();
 
     checkDensityRatios();
 }

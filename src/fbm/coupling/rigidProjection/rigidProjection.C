@@ -234,20 +234,7 @@ Foam::fbm::couplingModels::rigidProjection::rigidProjection
     }
 
     // The added mass is in the fluid solve: no virtual-mass term
-    const scalar Ca = dict.getCheckOrDefault<scalar>
-    (
-        "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
-    );
-    if (Ca != 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "addedMassCoeff " << Ca << " with coupling rigidProjection in "
-            << dict.name() << nl
-            << "    The rigid projection carries the added mass in the"
-            << " fluid solve; addedMassCoeff is for the explicit"
-            << " coupling only: remove it or set it to 0"
-            << exit(FatalIOError);
-    }
+    rejectAddedMassCoeff();
 
     // The extra inertia of the bodies is an implicit Euler term
     const fvMesh& mesh = system.mesh();
