@@ -1,0 +1,573 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "semiImplicit.H"
+#include "bodySystem.H"
+#include "fvcGrad.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace couplingModels
+{
+    defineTypeNameAndDebug(semiImplicit, 0);
+    addToRunTimeSelectionTable(couplingModel, semiImplicit, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// The coupled patches (processor, cyclic) of a field take the new cell
+// values; the other patches keep theirs (HbyA's wall values are the
+// constrained ones of constrainHbyA)
+template<class Type>
+void correctCoupled
+(
+    Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& fld
+)
+{
+    using namespace Foam;
+    typename GeometricField<Type, fvPatchField, volMesh>::Boundary& bf =
+        fld.boundaryFieldRef();
+
+    const Pstream::commsTypes commsType =
+        (Pstream::defaultCommsType == Pstream::commsTypes::nonBlocking)
+      ? Pstream::commsTypes::nonBlocking
+      : Pstream::commsTypes::blocking;
+
+    const label nReq = Pstream::nRequests();
+    forAll(bf, patchi)
+    {
+        if (bf[patchi].coupled())
+        {
+            bf[patchi].initEvaluate(commsType);
+        }
+    }
+    if (commsType == Pstream::commsTypes::nonBlocking && Pstream::parRun())
+    {
+        Pstream::waitRequests(nReq);
+    }
+    forAll(bf, patchi)
+    {
+        if (bf[patchi].coupled())
+        {
+            bf[patchi].evaluate(commsType);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::fbm::couplingModels::semiImplicit::startStep
+(
+    const volScalarField& p
+)
+{
+    const fictitiousBoundary& fb = system_.fb();
+    const scalarField& id = fb.bodyID();
+
+    DynamicList<label> cells(fb.activeCells().size());
+    for (const label celli : fb.activeCells())
+    {
+        const label bi = label(id[celli]);
+        if (bi >= 0 && heavy_[bi])
+        {
+            cells.append(celli);
+        }
+    }
+    cells_.transfer(cells);
+    weight_.setSize(cells_.size());
+    weight_ = 0;
+    lastGradP_.setSize(cells_.size());
+    lastGradP_ = Zero;
+
+    timeIndex_ = system_.mesh().time().timeIndex();
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::pressureForces
+(
+    const volVectorField& gradP,
+    List<vector>& P,
+    List<vector>& Q
+) const
+{
+    const PtrList<body>& bodies = system_.bodies();
+    const vectorField& C = system_.mesh().C().primitiveField();
+    const scalarField& V = system_.mesh().V();
+    const scalarField& id = system_.fb().bodyID();
+    const scalar rhoFluid = system_.rhoFluid();
+
+    P.setSize(bodies.size());
+    Q.setSize(bodies.size());
+    P = Zero;
+    Q = Zero;
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        const label bi = label(id[celli]);
+        const vector f(-rhoFluid*weight_[i]*V[celli]*gradP[celli]);
+        P[bi] += f;
+        Q[bi] += (C[celli] - bodies[bi].centre()) ^ f;
+    }
+    Pstream::listCombineGather(P, plusEqOp<vector>());
+    Pstream::listCombineScatter(P);
+    Pstream::listCombineGather(Q, plusEqOp<vector>());
+    Pstream::listCombineScatter(Q);
+
+    forAll(bodies, bi)
+    {
+        P[bi] = cmptMultiply(planeMask_, P[bi]);
+        Q[bi] = cmptMultiply(axisMask_, Q[bi]);
+    }
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::shell
+(
+    scalarList& m,
+    List<symmTensor>& J
+) const
+{
+    const PtrList<body>& bodies = system_.bodies();
+    const vectorField& C = system_.mesh().C().primitiveField();
+    const scalarField& V = system_.mesh().V();
+    const scalarField& id = system_.fb().bodyID();
+    const scalarField& alpha = system_.fb().alpha();
+    const scalar rhoFluid = system_.rhoFluid();
+
+    m.setSize(bodies.size());
+    J.setSize(bodies.size());
+    m = Zero;
+    J = Zero;
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        const label bi = label(id[celli]);
+        const scalar dm =
+            rhoFluid*max(weight_[i] - alpha[celli], scalar(0))*V[celli];
+        const vector r(C[celli] - bodies[bi].centre());
+        m[bi] += dm;
+        J[bi] += dm*(magSqr(r)*symmTensor::I - sqr(r));
+    }
+    Pstream::listCombineGather(m, plusEqOp<scalar>());
+    Pstream::listCombineScatter(m);
+    Pstream::listCombineGather(J, plusEqOp<symmTensor>());
+    Pstream::listCombineScatter(J);
+}
+
+
+Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
+(
+    const label bi
+) const
+{
+    // dt rho_f/rho of body and shell together: mass M + m in the volume
+    // V_b + m/rho_f
+    const body& b = system_.bodies()[bi];
+    const scalar Vb = b.shape().volume();
+    return
+        system_.mesh().time().deltaTValue()
+       *(system_.rhoFluid()*Vb + shellMass_[bi])
+       /(b.rho()*Vb + shellMass_[bi]);
+}
+
+
+Foam::vector Foam::fbm::couplingModels::semiImplicit::rigidImpulse
+(
+    const label bi,
+    const vector& P,
+    const vector& Q,
+    const point& x
+) const
+{
+    const body& b = system_.bodies()[bi];
+    const scalar dt = system_.mesh().time().deltaTValue();
+    const scalar M = b.rho()*b.shape().volume() + shellMass_[bi];
+    return
+        cmptMultiply(planeMask_, dt*P/M)
+      + (angularImpulse(bi, dt*Q) ^ (x - b.centre()));
+}
+
+
+Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
+(
+    const label bi,
+    const vector& L
+) const
+{
+    const body& b = system_.bodies()[bi];
+    if (!b.rotates())
+    {
+        return Zero;
+    }
+    const symmTensor I(b.inertia() + shellInertia_[bi]);
+    if (cmptSum(axisMask_) == 1)
+    {
+        // 2D: about the empty direction, a principal direction of I
+        return cmptMultiply(axisMask_, L)/(axisMask_ & (I & axisMask_));
+    }
+    return inv(I) & L;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::couplingModels::semiImplicit::semiImplicit
+(
+    const dictionary& dict,
+    bodySystem& system
+)
+:
+    couplingModel(dict, system),
+    heavy_(system.bodies().size(), false),
+    timeIndex_(-1),
+    pressureForce_(system.bodies().size(), Zero),
+    pressureTorque_(system.bodies().size(), Zero),
+    shellMass_(system.bodies().size(), Zero),
+    shellInertia_(system.bodies().size(), Zero),
+    lastStepKnown_(false),
+    planeMask_(vector::one),
+    axisMask_(vector::one)
+{
+    rejectContactProjection();
+    rejectAddedMassCoeff();
+
+    const fvMesh& mesh = system.mesh();
+    const dictionary& pimpleDict = mesh.solutionDict().subDict("PIMPLE");
+    if (pimpleDict.getOrDefault<bool>("consistent", false))
+    {
+        FatalIOErrorInFunction(pimpleDict)
+            << "consistent yes with coupling " << type() << " ("
+            << dict.name() << ")" << nl
+            << "    Its pressure step changes PISO's 1/A in the bodies'"
+            << " cells; set consistent no"
+            << exit(FatalIOError);
+    }
+
+    if (mesh.nSolutionD() == 2)
+    {
+        const Vector<label>& sd = mesh.solutionD();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            planeMask_[d] = (sd[d] < 0) ? 0 : 1;
+            axisMask_[d] = 1 - planeMask_[d];
+        }
+    }
+
+    const PtrList<body>& bodies = system.bodies();
+    forAll(bodies, bi)
+    {
+        heavy_[bi] = bodies[bi].translates();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
+{
+    // The state of the last step, before the bodies are advanced
+    PtrList<body>& bodies = system_.bodies();
+    const label nb = bodies.size();
+    List<vector> U0(nb), a0(nb), omega0(nb), omegaDot0(nb);
+    forAll(bodies, bi)
+    {
+        const bodyState& s = bodies[bi].state();
+        U0[bi] = s.U();
+        a0[bi] = s.acceleration();
+        omega0[bi] = s.omega();
+        omegaDot0[bi] = s.angularAcceleration();
+    }
+
+    const bool inside = system_.advance();
+
+    // The shell of fluid the penalty moves with a body is part of the
+    // force model's force as its inertia -m a of the last step: advance
+    // body and shell together, (M + m) (U - U^n) = M (U* - U^n) + dt m a^n
+    // (and likewise the rotation), so that this inertia is not lagged
+    if (lastStepKnown_)
+    {
+        const scalar dt = system_.mesh().time().deltaTValue();
+        bool changed = false;
+        forAll(bodies, bi)
+        {
+            if (!heavy_[bi] || shellMass_[bi] <= 0) continue;
+
+            body& b = bodies[bi];
+            bodyState& s = b.state();
+            const scalar M = b.rho()*b.shape().volume();
+            const vector dU
+            (
+                (M*(s.U() - U0[bi]) + dt*shellMass_[bi]*a0[bi])
+               /(M + shellMass_[bi])
+            );
+            s.U() = U0[bi] + cmptMultiply(planeMask_, dU);
+            s.acceleration() = (s.U() - U0[bi])/dt;
+            if (b.rotates())
+            {
+                const vector L
+                (
+                    (b.inertia() & (s.omega() - omega0[bi]))
+                  + dt*(shellInertia_[bi] & omegaDot0[bi])
+                );
+                s.omega() = omega0[bi] + angularImpulse(bi, L);
+                s.angularAcceleration() = (s.omega() - omega0[bi])/dt;
+            }
+            changed = true;
+        }
+        if (changed)
+        {
+            system_.fb().updateVelocity();
+        }
+    }
+
+    return inside;
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
+(
+    volScalarField& rAU,
+    volVectorField& HbyA,
+    const volScalarField& p
+)
+{
+    const bool newStep = (timeIndex_ != system_.mesh().time().timeIndex());
+    if (newStep)
+    {
+        startStep(p);
+    }
+
+    // The rigid share w of a penalised cell: with the penalty lambda on
+    // the diagonal a_P + lambda, rAU = V/(a_P + lambda), w = lambda rAU/V
+    const fictitiousBoundary& fb = system_.fb();
+    const scalarField& lambda = fb.lambda();
+    const scalarField& id = fb.bodyID();
+    const scalarField& V = system_.mesh().V();
+    const vectorField& C = system_.mesh().C().primitiveField();
+    scalarField& rAUi = rAU.primitiveFieldRef();
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        weight_[i] = lambda[celli]*rAUi[celli]/V[celli];
+    }
+
+    // The pressure force before this corrector
+    const volVectorField gradP(fvc::grad(p));
+    pressureForces(gradP, lastForce_, lastTorque_);
+
+    if (newStep && !lastStepKnown_)
+    {
+        // The first step of a run without the last step's state: the
+        // pressure force of the present pressure on the new footprint,
+        // and no shell (the bodies were advanced without it; the shell of
+        // this step is taken from the next step on)
+        pressureForce_ = lastForce_;
+        pressureTorque_ = lastTorque_;
+        shellMass_ = Zero;
+        shellInertia_ = Zero;
+        lastStepKnown_ = true;
+    }
+
+    // The rigid share responds to the pressure as body and shell do, as
+    // matter of their mean density (1/A += w tau). HbyA takes the pressure
+    // impulse of the last step out of the body's velocity (the step's own
+    // pressure puts the new one back), and adds the response to the
+    // pressure p before this corrector less its rigid part, so that the
+    // body's cells deform only by the change of the pressure over the
+    // corrector, not by the whole non-uniform pressure gradient (which
+    // would drive a spurious flux through the body every step)
+    vectorField& HbyAi = HbyA.primitiveFieldRef();
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        const label bi = label(id[celli]);
+        const scalar w = weight_[i];
+        const scalar tau = responseTime(bi);
+        lastGradP_[i] = gradP[celli];
+        rAUi[celli] += w*tau;
+        HbyAi[celli] += w*
+        (
+            tau*gradP[celli]
+          + rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
+          - rigidImpulse(bi, pressureForce_[bi], pressureTorque_[bi], C[celli])
+        );
+    }
+
+    // Processor and cyclic neighbours take the new values
+    correctCoupled(rAU);
+    correctCoupled(HbyA);
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::beforeForces
+(
+    volVectorField& U,
+    const volScalarField& p
+)
+{
+    const fvMesh& mesh = system_.mesh();
+    if (timeIndex_ != mesh.time().timeIndex())
+    {
+        // No pressure corrector in this step
+        return;
+    }
+
+    PtrList<body>& bodies = system_.bodies();
+    const volVectorField gradP(fvc::grad(p));
+    List<vector> P, Q;
+    pressureForces(gradP, P, Q);
+
+    // The bodies' new velocities: the pressure force of the last step
+    // replaced by that of this one (and the accelerations of the step)
+    const scalar dt = mesh.time().deltaTValue();
+    forAll(bodies, bi)
+    {
+        if (!heavy_[bi]) continue;
+
+        body& b = bodies[bi];
+        bodyState& s = b.state();
+        const vector dU
+        (
+            rigidImpulse(bi, P[bi] - pressureForce_[bi], Zero, b.centre())
+        );
+        const vector dOmega
+        (
+            angularImpulse(bi, dt*(Q[bi] - pressureTorque_[bi]))
+        );
+        s.U() += dU;
+        s.acceleration() += dU/dt;
+        s.omega() += dOmega;
+        s.angularAcceleration() += dOmega/dt;
+    }
+
+    // The rigid share of the bodies' cells moves with the new velocity
+    // instead of its response to the pressure in the last corrector, and
+    // U.solid is that velocity: the force model sees the flow as the
+    // penalty at the new velocity would have left it (the momentum
+    // exchange lambda (u - u_s) then holds the body's rate of change of
+    // velocity and the new pressure)
+    const vectorField& C = mesh.C().primitiveField();
+    const scalarField& id = system_.fb().bodyID();
+    vectorField& u = U.primitiveFieldRef();
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        const label bi = label(id[celli]);
+        u[celli] += weight_[i]*
+        (
+            responseTime(bi)*(gradP[celli] - lastGradP_[i])
+          + rigidImpulse(bi, P[bi], Q[bi], C[celli])
+          - rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
+        );
+    }
+    U.correctBoundaryConditions();
+    system_.fb().updateVelocity();
+
+    // For the next step: this step's pressure force and shell
+    pressureForce_ = P;
+    pressureTorque_ = Q;
+    shell(shellMass_, shellInertia_);
+}
+
+
+bool Foam::fbm::couplingModels::semiImplicit::afterFlow
+(
+    volVectorField& U,
+    List<vector>& force,
+    List<vector>& torque
+)
+{
+    PtrList<body>& bodies = system_.bodies();
+    forAll(bodies, bi)
+    {
+        bodies[bi].setForce(force[bi], torque[bi]);
+    }
+    return true;
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::readState
+(
+    const dictionary& state
+)
+{
+    // The pressure force and the shell of the step that led to the
+    // restart time
+    const PtrList<body>& bodies = system_.bodies();
+    label nFound = 0;
+    for (const body& b : bodies)
+    {
+        if (state.subDict(b.name()).found("pressureForce")) ++nFound;
+    }
+    if (nFound && nFound != bodies.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "pressureForce given for " << nFound << " of the "
+            << bodies.size() << " bodies in " << state.name()
+            << nl << "    Give it for every body or for none"
+            << exit(FatalIOError);
+    }
+    if (nFound)
+    {
+        forAll(bodies, bi)
+        {
+            const dictionary& d = state.subDict(bodies[bi].name());
+            pressureForce_[bi] = d.get<vector>("pressureForce");
+            pressureTorque_[bi] = d.get<vector>("pressureTorque");
+            shellMass_[bi] = d.getCheck<scalar>
+            (
+                "shellMass", [](scalar m){ return m >= 0; }
+            );
+            shellInertia_[bi] = d.get<symmTensor>("shellInertia");
+        }
+        lastStepKnown_ = true;
+    }
+    else
+    {
+        Info<< "fbm: coupling " << type() << ": no pressureForce in "
+            << state.name() << "; the first step takes that of the"
+            << " restart pressure on the moved bodies" << nl;
+    }
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::writeState
+(
+    const label bi,
+    Ostream& os
+) const
+{
+    if (lastStepKnown_)
+    {
+        os.writeEntry("pressureForce", pressureForce_[bi]);
+        os.writeEntry("pressureTorque", pressureTorque_[bi]);
+        os.writeEntry("shellMass", shellMass_[bi]);
+        os.writeEntry("shellInertia", shellInertia_[bi]);
+    }
+}
+
+
+// ************************************************************************* //
