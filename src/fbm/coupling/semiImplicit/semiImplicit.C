@@ -13,6 +13,7 @@ License
 #include "semiImplicit.H"
 #include "bodySystem.H"
 #include "fvcGrad.H"
+#include "fvMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -190,7 +191,7 @@ Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
     return
         system_.mesh().time().deltaTValue()
        *(system_.rhoFluid()*Vb + shellMass_[bi])
-       /(b.rho()*Vb + shellMass_[bi]);
+       /(b.rho()*Vb + shellMass_[bi] + dampingMass_[bi]);
 }
 
 
@@ -204,7 +205,8 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::rigidImpulse
 {
     const body& b = system_.bodies()[bi];
     const scalar dt = system_.mesh().time().deltaTValue();
-    const scalar M = b.rho()*b.shape().volume() + shellMass_[bi];
+    const scalar M =
+        b.rho()*b.shape().volume() + shellMass_[bi] + dampingMass_[bi];
     return
         cmptMultiply(planeMask_, dt*P/M)
       + (angularImpulse(bi, dt*Q) ^ (x - b.centre()));
@@ -222,7 +224,10 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
     {
         return Zero;
     }
-    const symmTensor I(b.inertia() + shellInertia_[bi]);
+    const symmTensor I
+    (
+        b.inertia() + shellInertia_[bi] + dampingInertia_[bi]
+    );
     if (cmptSum(axisMask_) == 1)
     {
         // 2D: about the empty direction, a principal direction of I
@@ -247,6 +252,10 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     pressureTorque_(system.bodies().size(), Zero),
     shellMass_(system.bodies().size(), Zero),
     shellInertia_(system.bodies().size(), Zero),
+    dampingMass_(system.bodies().size(), Zero),
+    dampingInertia_(system.bodies().size(), Zero),
+    nextDampingMass_(system.bodies().size(), Zero),
+    nextDampingInertia_(system.bodies().size(), Zero),
     lastStepKnown_(false),
     planeMask_(vector::one),
     axisMask_(vector::one)
@@ -303,25 +312,26 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
 
     const bool inside = system_.advance();
 
-    // The shell of fluid the penalty moves with a body is part of the
-    // force model's force as its inertia -m a of the last step: advance
-    // body and shell together, (M + m) (U - U^n) = M (U* - U^n) + dt m a^n
-    // (and likewise the rotation), so that this inertia is not lagged
+    // The shell of fluid the penalty moves with a body, and the fluid the
+    // viscous stress drags with it within a step, are part of the force
+    // model's force as their inertia -m a of the last step: advance them
+    // with the body, (M + m)(U - U^n) = M (U* - U^n) + dt m a^n (and
+    // likewise the rotation), so that this inertia is not lagged
     if (lastStepKnown_)
     {
         const scalar dt = system_.mesh().time().deltaTValue();
         bool changed = false;
         forAll(bodies, bi)
         {
-            if (!heavy_[bi] || shellMass_[bi] <= 0) continue;
+            const scalar m = shellMass_[bi] + dampingMass_[bi];
+            if (!heavy_[bi] || m <= 0) continue;
 
             body& b = bodies[bi];
             bodyState& s = b.state();
             const scalar M = b.rho()*b.shape().volume();
             const vector dU
             (
-                (M*(s.U() - U0[bi]) + dt*shellMass_[bi]*a0[bi])
-               /(M + shellMass_[bi])
+                (M*(s.U() - U0[bi]) + dt*m*a0[bi])/(M + m)
             );
             s.U() = U0[bi] + cmptMultiply(planeMask_, dU);
             s.acceleration() = (s.U() - U0[bi])/dt;
@@ -330,7 +340,11 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
                 const vector L
                 (
                     (b.inertia() & (s.omega() - omega0[bi]))
-                  + dt*(shellInertia_[bi] & omegaDot0[bi])
+                  + dt*
+                    (
+                        (shellInertia_[bi] + dampingInertia_[bi])
+                      & omegaDot0[bi]
+                    )
                 );
                 s.omega() = omega0[bi] + angularImpulse(bi, L);
                 s.angularAcceleration() = (s.omega() - omega0[bi])/dt;
@@ -344,6 +358,92 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
     }
 
     return inside;
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::constrain
+(
+    fvMatrix<vector>& UEqn
+) const
+{
+    // The viscous (and convective) coupling of each body's cells to the
+    // fluid beside them, from the momentum matrix: over the faces between
+    // a cell of rigid share w_c and a neighbour of smaller share w_n, with
+    // a_cn the neighbour's coefficient in the row of c, the body's force
+    // changes by -D dU within a step when its velocity changes by dU,
+    //     D = rho_f sum a_cn (w_c - w_n),
+    // a lagged stiffness that the explicit force cannot take when dt D > M
+    // (a sphere at R/h 4 and nu dt/h^2 near 1); dt D is the damping mass
+    // advanced with the body from the next step on (the added-damping of
+    // Banks et al. 2017, here from the discrete operator)
+    const fictitiousBoundary& fb = system_.fb();
+    const fvMesh& mesh = system_.mesh();
+    const scalarField& lambda = fb.lambda();
+    const scalarField& id = fb.bodyID();
+    const scalarField& diag = UEqn.diag();
+    const labelList& active = fb.activeCells();
+
+    if (weightField_.size() != mesh.nCells())
+    {
+        weightField_.setSize(mesh.nCells());
+        weightField_ = 0;
+    }
+    for (const label celli : active)
+    {
+        const label bi = label(id[celli]);
+        if (bi >= 0 && heavy_[bi] && diag[celli] > 0)
+        {
+            weightField_[celli] = lambda[celli]/diag[celli];
+        }
+    }
+
+    const PtrList<body>& bodies = system_.bodies();
+    const vectorField& C = mesh.C().primitiveField();
+    const labelUList& own = UEqn.lduAddr().lowerAddr();
+    const labelUList& nei = UEqn.lduAddr().upperAddr();
+    const fvMatrix<vector>& M = UEqn;
+    const scalarField& upper = M.upper();
+    const scalarField& lower = M.lower();
+    const cellList& cells = mesh.cells();
+    const label nInternalFaces = mesh.nInternalFaces();
+    const scalar rhoFluid = system_.rhoFluid();
+    const scalar dt = mesh.time().deltaTValue();
+
+    nextDampingMass_ = Zero;
+    nextDampingInertia_ = Zero;
+    for (const label celli : active)
+    {
+        const scalar wc = weightField_[celli];
+        if (wc <= 0) continue;
+
+        const label bi = label(id[celli]);
+        const vector r(C[celli] - bodies[bi].centre());
+        scalar g = 0;
+        for (const label facei : cells[celli])
+        {
+            if (facei >= nInternalFaces) continue;
+            const bool isOwner = (own[facei] == celli);
+            const label other = isOwner ? nei[facei] : own[facei];
+            const scalar a = -(isOwner ? upper[facei] : lower[facei]);
+            const scalar dw = wc - weightField_[other];
+            if (a > 0 && dw > 0)
+            {
+                g += a*dw;
+            }
+        }
+        const scalar dm = dt*rhoFluid*g;
+        nextDampingMass_[bi] += dm;
+        nextDampingInertia_[bi] += dm*(magSqr(r)*symmTensor::I - sqr(r));
+    }
+    for (const label celli : active)
+    {
+        weightField_[celli] = 0;
+    }
+
+    Pstream::listCombineGather(nextDampingMass_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(nextDampingMass_);
+    Pstream::listCombineGather(nextDampingInertia_, plusEqOp<symmTensor>());
+    Pstream::listCombineScatter(nextDampingInertia_);
 }
 
 
@@ -388,6 +488,8 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
         pressureTorque_ = lastTorque_;
         shellMass_ = Zero;
         shellInertia_ = Zero;
+        dampingMass_ = Zero;
+        dampingInertia_ = Zero;
         lastStepKnown_ = true;
     }
 
@@ -490,6 +592,8 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     pressureForce_ = P;
     pressureTorque_ = Q;
     shell(shellMass_, shellInertia_);
+    dampingMass_ = nextDampingMass_;
+    dampingInertia_ = nextDampingInertia_;
 }
 
 
@@ -542,6 +646,11 @@ void Foam::fbm::couplingModels::semiImplicit::readState
                 "shellMass", [](scalar m){ return m >= 0; }
             );
             shellInertia_[bi] = d.get<symmTensor>("shellInertia");
+            dampingMass_[bi] = d.getCheck<scalar>
+            (
+                "dampingMass", [](scalar m){ return m >= 0; }
+            );
+            dampingInertia_[bi] = d.get<symmTensor>("dampingInertia");
         }
         lastStepKnown_ = true;
     }
@@ -566,6 +675,8 @@ void Foam::fbm::couplingModels::semiImplicit::writeState
         os.writeEntry("pressureTorque", pressureTorque_[bi]);
         os.writeEntry("shellMass", shellMass_[bi]);
         os.writeEntry("shellInertia", shellInertia_[bi]);
+        os.writeEntry("dampingMass", dampingMass_[bi]);
+        os.writeEntry("dampingInertia", dampingInertia_[bi]);
     }
 }
 
