@@ -90,8 +90,11 @@ d, i = np.unique(24 - thr[:, 0], return_index=True)
 refTh = (d, 180*thr[i, 1])
 refV = (vr[:, 0], -vr[:, 1])
 
+# Runs that reached their endTime only (a run that stopped, as one whose
+# coupling ran away, is reported by plotResults.py)
 runs = sorted(os.path.basename(c) for c in glob.glob("runs/fbm-nu0.028284-L*")
-              if os.path.exists(os.path.join(c, "runDone")))
+              if os.path.exists(os.path.join(c, "runDone"))
+              and "\nEnd" in open(os.path.join(c, "log.fbmFoam")).read())
 
 
 def history(run):
@@ -258,6 +261,10 @@ with open("xia.csv", "w", newline="") as f:
     wr.writerow(dict(quantity="reference only: largest abs. theta beyond "
                      "16 A of fall (the swing has died)", unit="deg",
                      reference="%.4g" % np.max(np.abs(refTh[1][k]))))
+    k = refV[0] >= 0.3
+    wr.writerow(dict(quantity="reference only: half the range of U over "
+                     "t = 0.3-0.97 s, in % of its U_t", unit="%",
+                     reference="%.3g" % (50*np.ptp(refV[1][k])/refUt)))
 print(open("xia.csv").read())
 
 fig, ax = plt.subplots(1, 3, figsize=(16, 4.8))

@@ -108,6 +108,9 @@ def fbmHistory(case):
     if coupling == "explicit":
         coupling += ", addedMassCoeff " + parameter(
             case, "addedMassCoeff", "constant/fbmProperties")
+    if re.search(r"^\s*extrapolatePredictor\s+yes\s*;", open(os.path.join(
+            case, "system/fvSolution")).read(), re.M):
+        coupling += "; 1 outer corrector, extrapolatePredictor"
     return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 
