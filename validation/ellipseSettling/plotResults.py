@@ -51,7 +51,9 @@ t = 0.4 (the first turn): no terminal values in table.md.
 
 Only runs that have been run to their end (runs/RUN/runDone, written by
 Allrun) are analysed. Writes results.csv, history.csv (every run's history, 0.01 s apart, up to
-the cut), comparison.csv, table.md and settling.png.
+the cut), comparison.csv, table.md and settling.png. The rows of a run
+analysed before whose case is not in runs/ (runs/ is not in git) are kept
+as they are in these files, and the chart draws it from history.csv.
 """
 import csv
 import glob
@@ -106,6 +108,9 @@ def fbmHistory(case):
     if coupling == "explicit":
         coupling += ", addedMassCoeff " + parameter(
             case, "addedMassCoeff", "constant/fbmProperties")
+    if re.search(r"^\s*extrapolatePredictor\s+yes\s*;", open(os.path.join(
+            case, "system/fvSolution")).read(), re.M):
+        coupling += "; 1 outer corrector, extrapolatePredictor"
     return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 
@@ -244,6 +249,34 @@ for run in runs:
     rows.append(row)
     hist[run] = h
 
+# Runs of a previous analysis whose case is not here (runs/ is not in git,
+# ./Allrun RUN runs one): their rows in results.csv, history.csv,
+# comparison.csv and table.md are kept as they are, and the chart draws
+# them from history.csv (0.01 s apart)
+
+
+def previous(fname):
+    if not os.path.exists(fname):
+        return [], []
+    lines = list(csv.reader(open(fname, newline="")))
+    return (lines[0], lines[1:]) if lines else ([], [])
+
+
+analysed = {r["run"] for r in rows}
+resHead, resOld = previous("results.csv")
+kept = {line[0]: dict(zip(resHead, line)) for line in resOld
+        if line and line[0] not in analysed}
+histOld = [line for line in previous("history.csv")[1]
+           if line and line[0] in kept]
+cmpOld = [line for line in previous("comparison.csv")[1]
+          if line and line[0] in kept]
+tableOld = {}
+if os.path.exists("table.md"):
+    for line in open("table.md"):
+        cell = line.split("|")[1].strip() if line.startswith("| ") else ""
+        if cell in kept:
+            tableOld[cell] = line
+
 fmt = dict(nu="{:g}", t_end="{:.4g}", t_sound="{:.4g}", t_cut="{:.4g}", y_end="{:.4f}", window_from="{:.4g}",
            Ut="{:.4f}", Re_2a="{:.2f}", Re_a="{:.2f}", theta_mean="{:.2f}",
            theta_amp="{:.2f}", x_mean="{:.4f}", x_offset_a="{:.3f}",
@@ -252,21 +285,30 @@ fmt = dict(nu="{:g}", t_end="{:.4g}", t_sound="{:.4g}", t_cut="{:.4g}", y_end="{
            theta_overshoot="{:.2f}", Umax="{:.4f}", cpu_s="{:.0f}")
 with open("results.csv", "w", newline="") as f:
     wr = csv.writer(f)
-    keys = list(rows[0].keys()) if rows else []
+    keys = list(rows[0].keys()) if rows else resHead
     wr.writerow(keys)
-    for r in rows:
-        wr.writerow([("" if isinstance(r[k], float) and math.isnan(r[k])
-                      else fmt[k].format(r[k])) if k in fmt else r[k]
-                     for k in keys])
+    lines = {r["run"]: [("" if isinstance(r[k], float) and math.isnan(r[k])
+                         else fmt[k].format(r[k])) if k in fmt else r[k]
+                        for k in keys] for r in rows}
+    lines.update({run: [k_.get(k, "") for k in keys]
+                  for run, k_ in kept.items()})
+    for run in sorted(lines):
+        wr.writerow(lines[run])
 
 with open("history.csv", "w", newline="") as f:
     wr = csv.writer(f)
     wr.writerow(["run", "t", "x", "y", "Uy", "theta"])
+    lines = {run: [line for line in histOld if line[0] == run]
+             for run in kept}
     for run, (t, x, y, uy, theta, ts) in hist.items():
+        lines[run] = []
         for tt in np.arange(0, t[-1] + 1e-9, 0.01):
             i = min(np.searchsorted(t, tt), len(t) - 1)
-            wr.writerow([run, "%.2f" % tt, "%.5f" % x[i], "%.5f" % y[i],
-                         "%.5f" % uy[i], "%.3f" % theta[i]])
+            lines[run].append([run, "%.2f" % tt, "%.5f" % x[i],
+                               "%.5f" % y[i], "%.5f" % uy[i],
+                               "%.3f" % theta[i]])
+    for run in sorted(lines):
+        wr.writerows(lines[run])
 
 # The solvers side by side at the same times: at each viscosity that has a
 # body-fitted run (the -explicit variant left out), every fbmFoam and
@@ -286,33 +328,48 @@ with open("comparison.csv", "w", newline="") as f:
                 wr.writerow([run, "%.2f" % tt, "%.4f" % xi(x),
                              "%.4f" % xi(y), "%.4f" % -xi(uy),
                              "%.2f" % xi(theta)])
+    wr.writerows(cmpOld)
 
 with open("table.md", "w") as f:
     f.write("| run | coupling | cells | U_t | Re (2a) | theta [deg] "
             "| x - L/2 [a] | x swing [a] | period | mode | CPU [s] |\n")
     f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
+    table = dict(tableOld)
     for r in rows:
         if r["ended"] == "no" or r["run"].endswith("-short"):
             note = (r["mode"] if r["ended"] == "no" else
-                    "the first turn only (endTime %.3g)" % r["t_end"])
-            f.write("| %s | %s | %s | - | - | - | - | - | - | %s; sound to "
-                    "t = %.3g | %.0f |\n" % (
-                        r["run"], r["coupling"], f"{r['cells']:,}",
-                        note, r["t_sound"], r["cpu_s"]))
+                    "the %s only (endTime %.3g)" % (
+                        "first turn" if r["t_end"] <= 0.5 else "start",
+                        r["t_end"]))
+            table[r["run"]] = (
+                "| %s | %s | %s | - | - | - | - | - | - | %s; sound to "
+                "t = %.3g | %.0f |\n" % (
+                    r["run"], r["coupling"], f"{r['cells']:,}",
+                    note, r["t_sound"], r["cpu_s"]))
             continue
-        f.write("| %s | %s | %s | %.3f | %.1f | %.1f ± %.1f | %.2f | %.2f "
-                "| %s | %s | %.0f |\n" % (
+        table[r["run"]] = (
+            "| %s | %s | %s | %.3f | %.1f | %.1f ± %.1f | %.2f | %.2f "
+            "| %s | %s | %.0f |\n" % (
                     r["run"], r["coupling"], f"{r['cells']:,}", r["Ut"],
                     r["Re_2a"], r["theta_mean"], r["theta_amp"],
                     r["x_offset_a"], r["x_amp_a"],
                     "" if math.isnan(r["period"]) else "%.2f" % r["period"],
                     r["mode"], r["cpu_s"]))
+    for run in sorted(table):
+        f.write(table[run])
 
 # Chart: trajectory, angle and settling velocity against time, and the
 # first turn of the runs at the viscosity of the body-fitted runs
 fig, ax = plt.subplots(1, 4, figsize=(18, 5.5),
                        gridspec_kw=dict(width_ratios=[1, 2, 2, 2]))
-for run, (t, x, y, uy, theta, ts) in hist.items():
+drawn = dict(hist)
+for run, k_ in kept.items():
+    h = np.array([[float(v) for v in line[1:]] for line in histOld
+                  if line[0] == run])
+    if len(h):
+        drawn[run] = (h[:, 0], h[:, 1], h[:, 2], h[:, 3], h[:, 4],
+                      float(k_["t_sound"]))
+for run, (t, x, y, uy, theta, ts) in sorted(drawn.items()):
     if run.endswith("-explicit") or run.endswith("-short"):
         continue
     # body-fitted runs: up to the breakdown of the flow (t_sound)
@@ -352,11 +409,13 @@ ax[3].set_ylabel("angle [deg] (circles)")
 tw.set_ylabel("settling velocity [cm/s] (squares, faint)")
 ax[3].set_title("fbmFoam against body-fitted: the first turn")
 ax[3].legend(fontsize=7, loc="lower left")
-modes = "; ".join(f"{r['run']}: {r['mode']}" for r in rows
+modes = "; ".join(f"{r['run']}: {r['mode']}" for r in
+                  sorted(rows + list(kept.values()), key=lambda r: r["run"])
                   if r["run"].startswith("fbm-")
                   and not r["run"].endswith("-short"))
 fig.suptitle("Ellipse a/b = 2, rho_s/rho_f = 1.1, 2a/L = 0.25 (after Xia "
-             "et al. 2009; their regime map could not be retrieved, "
+             "et al. 2009: nu = 0.028284 is their validation case, "
+             "xia.png; their regime map could not be retrieved, "
              "README.md). Mode found: " + modes, fontsize=8)
 fig.tight_layout()
 fig.savefig("settling.png", dpi=110)
