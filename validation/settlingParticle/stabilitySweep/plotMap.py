@@ -17,19 +17,23 @@ for r in csv.DictReader(open(os.path.join(here, 'sweep.csv'))):
         rows.append(r)
 
 
+COUPLINGS = {'P': 'coupling rigidProjection', 'S': 'coupling semiImplicit'}
+
+
 def key(c):
-    """Coupling label: C_a as a number, or 'P' (rigidProjection) last."""
-    return (1, 0) if c == 'P' else (0, float(c))
+    """Coupling label: C_a as a number, then 'P' (rigidProjection) and 'S'
+    (semiImplicit)."""
+    return (1, c) if c in COUPLINGS else (0, float(c))
 
 
 def title(c):
-    if c == 'P':
-        return 'coupling rigidProjection'
+    if c in COUPLINGS:
+        return COUPLINGS[c]
     return 'explicit, addedMassCoeff C_a = %g' % float(c)
 
 
 for r in rows:
-    r['Ca'] = 'P' if r['Ca'] == 'P' else '%g' % float(r['Ca'])
+    r['Ca'] = r['Ca'] if r['Ca'] in COUPLINGS else '%g' % float(r['Ca'])
 Cas = sorted({r['Ca'] for r in rows}, key=key)
 dts = sorted({float(r['dt']) for r in rows})
 rhos = sorted({float(r['rho_s']) for r in rows}, reverse=True)
