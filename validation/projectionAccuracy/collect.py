@@ -38,8 +38,9 @@ COLUMNS = ["run", "body", "coupling", "maxBodyCo", "deltaT", "cells",
            "a_first", "cpu_s", "status"]
 ORDER = ["disk-explicit", "disk-projection", "disk-projection-maxBodyCo0.1",
          "disk-projection-dt2e-4", "sphere-explicit", "sphere-projection",
-         "sphere-projection-maxBodyCo0.1", "neutral-L3", "neutral-L4",
-         "neutral-L5"]
+         "sphere-projection-maxBodyCo0.1", "sphere-semiImplicit",
+         "sphere-semiImplicit-dt5e-4", "neutral-L3",
+         "neutral-L4", "neutral-L5"]
 
 
 def lastMatch(path, pattern):
@@ -77,8 +78,8 @@ def collectRun(run):
 
     props = open(os.path.join(run, "constant/fbmProperties")).read()
     control = open(os.path.join(run, "system/controlDict")).read()
-    coupling = "rigidProjection" if re.search(r"^coupling\s+rigidProjection",
-                                              props, re.M) else "explicit"
+    m = re.search(r"^coupling\s+(\w+)\s*;", props, re.M)
+    coupling = m.group(1) if m else "explicit"
     m = re.search(r"^maxBodyCo\s+([^;\s]+);", props, re.M)
     maxBodyCo = m.group(1) if m else ""
     fixed = re.search(r"^adjustTimeStep\s+no;", control, re.M)
@@ -106,8 +107,14 @@ def collectRun(run):
 def main():
     runs = [r for r in glob.glob(os.path.join(HERE, "runs", "*"))
             if os.path.basename(r) in ORDER]
-    runs.sort(key=lambda r: ORDER.index(os.path.basename(r)))
-    results = [collectRun(r) for r in runs]
+    # The rows of runs not in runs/ stay as they are in results.csv
+    results = {os.path.basename(r): collectRun(r) for r in runs}
+    path = os.path.join(HERE, "results.csv")
+    if os.path.isfile(path):
+        for row in csv.DictReader(open(path)):
+            if row["run"] in ORDER and row["run"] not in results:
+                results[row["run"]] = row
+    results = [results[n] for n in ORDER if n in results]
     with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, COLUMNS, lineterminator="\n")
         w.writeheader()
