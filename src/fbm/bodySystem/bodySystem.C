@@ -438,9 +438,15 @@ void Foam::fbm::bodySystem::checkRunaway(const label bi)
             << " steps (U " << b.U() << ", omega " << b.omega() << ")" << nl
             << "    The coupling is unstable for this body (density ratio "
             << b.rho()/rhoFluid_ << "): the run stops; the last written"
-            << " time is the last good state. Set addedMassCoeff (0.5 to 1)"
-            << " or coupling rigidProjection in " << objectPath()
-            << ", or reduce the time step." << exit(FatalError);
+            << " time is the last good state. "
+            << (
+                   coupling_->type() == "explicit"
+                 ? "Set addedMassCoeff (0.5 to 1), coupling semiImplicit"
+                   " or coupling rigidProjection in "
+                 : "Set coupling rigidProjection in "
+               )
+            << objectPath() << ", or reduce the time step."
+            << exit(FatalError);
     }
 }
 

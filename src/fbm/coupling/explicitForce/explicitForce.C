@@ -52,7 +52,8 @@ void Foam::fbm::couplingModels::explicitForce::checkDensityRatios() const
             << first->rho()/rhoFluid << " with the explicit coupling"
             << " and addedMassCoeff 0 in " << dict_.name() << nl
             << "    is likely to oscillate or diverge (lagged added"
-            << " mass); set addedMassCoeff 0.5 to 1";
+            << " mass); set addedMassCoeff 0.5 to 1 or coupling"
+            << " semiImplicit";
         if (nLight > 1)
         {
             Info<< " (" << nLight << " such bodies)";
