@@ -86,4 +86,28 @@ void Foam::fbm::couplingModel::rejectAddedMassCoeff() const
 }
 
 
+bool Foam::fbm::couplingModel::stateHasEntry
+(
+    const dictionary& state,
+    const word& key
+) const
+{
+    const PtrList<body>& bodies = system_.bodies();
+    label nFound = 0;
+    for (const body& b : bodies)
+    {
+        if (state.subDict(b.name()).found(key)) ++nFound;
+    }
+    if (nFound && nFound != bodies.size())
+    {
+        FatalIOErrorInFunction(state)
+            << key << " given for " << nFound << " of the "
+            << bodies.size() << " bodies in " << state.name()
+            << nl << "    Give it for every body or for none"
+            << exit(FatalIOError);
+    }
+    return nFound > 0;
+}
+
+
 // ************************************************************************* //

@@ -400,20 +400,8 @@ void Foam::fbm::couplingModels::rigidProjection::readState
     // projectContacts: the contact force of the step that led to the
     // restart time, when the earlier run wrote it (contactForce)
     const PtrList<body>& bodies = system_.bodies();
-    label nContact = 0;
-    for (const body& b : bodies)
-    {
-        if (state.subDict(b.name()).found("contactForce")) ++nContact;
-    }
-    if (nContact && nContact != bodies.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "contactForce given for " << nContact << " of the "
-            << bodies.size() << " bodies in " << state.name()
-            << nl << "    Give it for every body or for none"
-            << exit(FatalIOError);
-    }
-    if (projectContacts_ && nContact)
+    const bool hasContact = stateHasEntry(state, "contactForce");
+    if (projectContacts_ && hasContact)
     {
         restartForce_.setSize(bodies.size());
         forAll(bodies, bi)

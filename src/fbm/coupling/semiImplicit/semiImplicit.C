@@ -621,20 +621,7 @@ void Foam::fbm::couplingModels::semiImplicit::readState
     // The pressure force and the shell of the step that led to the
     // restart time
     const PtrList<body>& bodies = system_.bodies();
-    label nFound = 0;
-    for (const body& b : bodies)
-    {
-        if (state.subDict(b.name()).found("pressureForce")) ++nFound;
-    }
-    if (nFound && nFound != bodies.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "pressureForce given for " << nFound << " of the "
-            << bodies.size() << " bodies in " << state.name()
-            << nl << "    Give it for every body or for none"
-            << exit(FatalIOError);
-    }
-    if (nFound)
+    if (stateHasEntry(state, "pressureForce"))
     {
         forAll(bodies, bi)
         {
