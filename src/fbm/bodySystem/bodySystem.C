@@ -578,15 +578,16 @@ Foam::fbm::footprint Foam::fbm::bodySystem::bodyFootprint() const
 
 Foam::scalar Foam::fbm::bodySystem::maxDeltaT() const
 {
+    // The coupling's own stability limit (semiImplicit)
+    scalar dtMax = coupling_->maxDeltaT();
     if (maxBodyCo_ >= VGREAT)
     {
-        return VGREAT;
+        return dtMax;
     }
 
     // Smallest cell size under each body, all bodies in one reduction
     const scalarList h(fb_.smallestCellSizes());
 
-    scalar dtMax = VGREAT;
     forAll(bodies_, bi)
     {
         const scalar speed = bodies_[bi].maxSpeed();
