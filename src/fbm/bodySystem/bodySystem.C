@@ -580,6 +580,7 @@ Foam::scalar Foam::fbm::bodySystem::maxDeltaT() const
 {
     // The coupling's own stability limit (semiImplicit)
     scalar dtMax = coupling_->maxDeltaT();
+    deltaTLimit_ = "coupling " + coupling_->type();
     if (maxBodyCo_ >= VGREAT)
     {
         return dtMax;
@@ -591,9 +592,10 @@ Foam::scalar Foam::fbm::bodySystem::maxDeltaT() const
     forAll(bodies_, bi)
     {
         const scalar speed = bodies_[bi].maxSpeed();
-        if (speed > VSMALL && h[bi] < VGREAT)
+        if (speed > VSMALL && h[bi] < VGREAT && maxBodyCo_*h[bi]/speed < dtMax)
         {
-            dtMax = min(dtMax, maxBodyCo_*h[bi]/speed);
+            dtMax = maxBodyCo_*h[bi]/speed;
+            deltaTLimit_ = "maxBodyCo";
         }
     }
 
