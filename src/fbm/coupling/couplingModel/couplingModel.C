@@ -86,6 +86,20 @@ void Foam::fbm::couplingModel::rejectAddedMassCoeff() const
 }
 
 
+void Foam::fbm::couplingModel::holdForces
+(
+    const List<vector>& force,
+    const List<vector>& torque
+) const
+{
+    PtrList<body>& bodies = system_.bodies();
+    forAll(bodies, bi)
+    {
+        bodies[bi].setForce(force[bi], torque[bi]);
+    }
+}
+
+
 bool Foam::fbm::couplingModel::stateHasEntry
 (
     const dictionary& state,

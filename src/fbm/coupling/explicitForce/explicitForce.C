@@ -101,11 +101,7 @@ bool Foam::fbm::couplingModels::explicitForce::afterFlow
     List<vector>& torque
 )
 {
-    PtrList<body>& bodies = system_.bodies();
-    forAll(bodies, bi)
-    {
-        bodies[bi].setForce(force[bi], torque[bi]);
-    }
+    holdForces(force, torque);
     return true;
 }
 

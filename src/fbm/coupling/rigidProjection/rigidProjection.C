@@ -356,11 +356,8 @@ bool Foam::fbm::couplingModels::rigidProjection::afterFlow
         projectionForces(U, force, torque);
     }
 
+    holdForces(force, torque);
     PtrList<body>& bodies = system_.bodies();
-    forAll(bodies, bi)
-    {
-        bodies[bi].setForce(force[bi], torque[bi]);
-    }
 
     // The footprint the flow was solved with: the flow there takes the
     // bodies' new velocities (the cells a body moves into keep their
