@@ -571,7 +571,8 @@ Foam::fbm::footprint Foam::fbm::bodySystem::bodyFootprint() const
     return footprint
     (
         mesh_, bodies_, rhoFluid_, fb_.alpha(), fb_.Us(), fb_.bodyID(),
-        fb_.activeCells(), fb_.lambda()
+        fb_.activeCells(), fb_.lambda(),
+        coupling_->directForce(), coupling_->directTorque()
     );
 }
 
@@ -620,8 +621,10 @@ void Foam::fbm::bodySystem::constrain(fvMatrix<vector>& UEqn) const
 
 void Foam::fbm::bodySystem::constrainPressureStep
 (
-    volScalarField& rAU,
+    const volScalarField& rAU,
+    volScalarField& rAtU,
     volVectorField& HbyA,
+    surfaceScalarField& phiHbyA,
     const volScalarField& p
 )
 {
@@ -630,7 +633,7 @@ void Foam::fbm::bodySystem::constrainPressureStep
         return;
     }
     phaseTimes::scope forcingTime(times_, phaseTimes::forcing);
-    coupling_->constrainPressureStep(rAU, HbyA, p);
+    coupling_->constrainPressureStep(rAU, rAtU, HbyA, phiHbyA, p);
 }
 
 

@@ -13,6 +13,7 @@ License
 #include "semiImplicit.H"
 #include "bodySystem.H"
 #include "fvcGrad.H"
+#include "fvcFlux.H"
 #include "fvMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -30,10 +31,9 @@ namespace couplingModels
 }
 }
 
-// Measured: the settling disk (2D) runs at 2.0 (nu dt/h^2 0.5) and fails at
-// 2.4; the sphere (3D) runs at 1.9 and fails at 4.8
+// The default of maxViscousRatio (semiImplicitCoeffs)
 const Foam::scalar
-Foam::fbm::couplingModels::semiImplicit::maxViscousRatio_ = 1.6;
+Foam::fbm::couplingModels::semiImplicit::defaultMaxViscousRatio_ = 1.6;
 
 
 // * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -259,8 +259,11 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     shellInertia_(system.bodies().size(), Zero),
     dampingMass_(system.bodies().size(), Zero),
     dampingInertia_(system.bodies().size(), Zero),
+    directForce_(system.bodies().size(), Zero),
+    directTorque_(system.bodies().size(), Zero),
     nextDampingMass_(system.bodies().size(), Zero),
     nextDampingInertia_(system.bodies().size(), Zero),
+    maxViscousRatio_(defaultMaxViscousRatio_),
     dtLimit_(VGREAT),
     warnedStep_(false),
     lastStepKnown_(false),
@@ -270,15 +273,35 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     rejectContactProjection();
     rejectAddedMassCoeff();
 
+    // The viscous limit of the step (optional semiImplicitCoeffs)
+    const dictionary& coeffs = dict.optionalSubDict(type() + "Coeffs");
+    maxViscousRatio_ = coeffs.getCheckOrDefault<scalar>
+    (
+        "maxViscousRatio", defaultMaxViscousRatio_,
+        [](scalar r){ return r > 0; }
+    );
+    Info<< "fbm: coupling " << type() << ": maxViscousRatio "
+        << maxViscousRatio_
+        << (coeffs.found("maxViscousRatio") ? "" : " (default)") << nl;
+
+    // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
+    // PISO's a_P the fluid beside a body responds to the pressure as if it
+    // were 1 + 2 nD nu dt/h^2 times heavier than it is (its neighbours
+    // held), the body's pressure impulse overshoots in each corrector and
+    // the force oscillates from step to step (measured: the settling disk
+    // at R/h 3 and nu dt/h^2 0.69 swings by +-50 % after 50 steps, by
+    // +-0.5 % with consistent yes)
     const fvMesh& mesh = system.mesh();
     const dictionary& pimpleDict = mesh.solutionDict().subDict("PIMPLE");
-    if (pimpleDict.getOrDefault<bool>("consistent", false))
+    if (!pimpleDict.getOrDefault<bool>("consistent", false))
     {
         FatalIOErrorInFunction(pimpleDict)
-            << "consistent yes with coupling " << type() << " ("
-            << dict.name() << ")" << nl
-            << "    Its pressure step changes PISO's 1/A in the bodies'"
-            << " cells; set consistent no"
+            << "coupling " << type() << " (" << dict.name() << ") needs"
+            << " consistent yes in " << pimpleDict.name() << nl
+            << "    Its pressure step takes the fluid's response to the"
+            << " pressure from PIMPLE's consistent (SIMPLEC) 1/A; with"
+            << " PISO's the body's force oscillates from step to step at"
+            << " viscous numbers nu dt/h^2 near 1"
             << exit(FatalIOError);
     }
 
@@ -483,12 +506,15 @@ void Foam::fbm::couplingModels::semiImplicit::constrain
 
 void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
 (
-    volScalarField& rAU,
+    const volScalarField& rAU,
+    volScalarField& rAtU,
     volVectorField& HbyA,
+    surfaceScalarField& phiHbyA,
     const volScalarField& p
 )
 {
-    const bool newStep = (timeIndex_ != system_.mesh().time().timeIndex());
+    const fvMesh& mesh = system_.mesh();
+    const bool newStep = (timeIndex_ != mesh.time().timeIndex());
     if (newStep)
     {
         startStep(p);
@@ -499,9 +525,9 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     const fictitiousBoundary& fb = system_.fb();
     const scalarField& lambda = fb.lambda();
     const scalarField& id = fb.bodyID();
-    const scalarField& V = system_.mesh().V();
-    const vectorField& C = system_.mesh().C().primitiveField();
-    scalarField& rAUi = rAU.primitiveFieldRef();
+    const scalarField& V = mesh.V();
+    const vectorField& C = mesh.C().primitiveField();
+    const scalarField& rAUi = rAU.primitiveField();
     forAll(cells_, i)
     {
         const label celli = cells_[i];
@@ -528,14 +554,30 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     }
 
     // The rigid share responds to the pressure as body and shell do, as
-    // matter of their mean density (1/A += w tau). HbyA takes the pressure
-    // impulse of the last step out of the body's velocity (the step's own
-    // pressure puts the new one back), and adds the response to the
-    // pressure p before this corrector less its rigid part, so that the
-    // body's cells deform only by the change of the pressure over the
-    // corrector, not by the whole non-uniform pressure gradient (which
-    // would drive a spurious flux through the body every step)
-    vectorField& HbyAi = HbyA.primitiveFieldRef();
+    // matter of their mean density (1/A += w tau in the pressure
+    // equation). HbyA takes the pressure impulse of the last step out of
+    // the body's velocity (the step's own pressure puts the new one back),
+    // and adds the response to the pressure p before this corrector less
+    // its rigid part, so that the body's cells deform only by the change
+    // of the pressure over the corrector, not by the whole non-uniform
+    // pressure gradient (which would drive a spurious flux through the
+    // body every step); the flux takes the same change
+    volVectorField dHbyA
+    (
+        IOobject
+        (
+            "dHbyA",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedVector(HbyA.dimensions(), Zero)
+    );
+    scalarField& rAtUi = rAtU.primitiveFieldRef();
+    vectorField& dHbyAi = dHbyA.primitiveFieldRef();
     forAll(cells_, i)
     {
         const label celli = cells_[i];
@@ -543,8 +585,8 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
         const scalar w = weight_[i];
         const scalar tau = responseTime(bi);
         lastGradP_[i] = gradP[celli];
-        rAUi[celli] += w*tau;
-        HbyAi[celli] += w*
+        rAtUi[celli] += w*tau;
+        dHbyAi[celli] = w*
         (
             tau*gradP[celli]
           + rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
@@ -553,8 +595,11 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     }
 
     // Processor and cyclic neighbours take the new values
-    correctCoupled(rAU);
+    correctCoupled(rAtU);
+    correctCoupled(dHbyA);
+    HbyA.primitiveFieldRef() += dHbyAi;
     correctCoupled(HbyA);
+    phiHbyA += fvc::flux(dHbyA);
 }
 
 
@@ -565,6 +610,8 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
 )
 {
     const fvMesh& mesh = system_.mesh();
+    directForce_ = Zero;
+    directTorque_ = Zero;
     if (timeIndex_ != mesh.time().timeIndex())
     {
         // No pressure corrector in this step
@@ -605,8 +652,13 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     // penalty at the new velocity would have left it (the momentum
     // exchange lambda (u - u_s) then holds the body's rate of change of
     // velocity and the new pressure)
+    // The cells' velocity is then the plain pressure step's plus w times
+    // the rigid velocity of the pressure impulse R(P) - R(P^n): a force
+    // on the enclosed fluid besides the penalty (directForce())
     const vectorField& C = mesh.C().primitiveField();
+    const scalarField& V = mesh.V();
     const scalarField& id = system_.fb().bodyID();
+    const scalar rhoFluid = system_.rhoFluid();
     vectorField& u = U.primitiveFieldRef();
     forAll(cells_, i)
     {
@@ -618,7 +670,24 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
           + rigidImpulse(bi, P[bi], Q[bi], C[celli])
           - rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
         );
+        const vector f
+        (
+            rhoFluid*weight_[i]*V[celli]/dt
+           *(
+                rigidImpulse(bi, P[bi], Q[bi], C[celli])
+              - rigidImpulse
+                (
+                    bi, pressureForce_[bi], pressureTorque_[bi], C[celli]
+                )
+            )
+        );
+        directForce_[bi] += f;
+        directTorque_[bi] += (C[celli] - bodies[bi].centre()) ^ f;
     }
+    Pstream::listCombineGather(directForce_, plusEqOp<vector>());
+    Pstream::listCombineScatter(directForce_);
+    Pstream::listCombineGather(directTorque_, plusEqOp<vector>());
+    Pstream::listCombineScatter(directTorque_);
     U.correctBoundaryConditions();
     system_.fb().updateVelocity();
 

@@ -86,6 +86,22 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
                 (rhoFluid/b.rho())*(b.inertia() & s.angularAcceleration());
         }
     }
+
+    // A coupling that set the velocity of the bodies' cells besides the
+    // penalty (semiImplicit, after the pressure step) pushed the enclosed
+    // fluid with a force of its own: the body's acceleration above holds
+    // it, the forcing's reaction does not (the penalty's target moved with
+    // the cells), so it is not the fluid's force on the body
+    const List<vector>& Fd = fp.directForce();
+    const List<vector>& Td = fp.directTorque();
+    if (Fd.size() && Pstream::master())
+    {
+        forAll(bodies, bi)
+        {
+            force[bi] -= Fd[bi];
+            torque[bi] -= Td[bi];
+        }
+    }
 }
 
 
