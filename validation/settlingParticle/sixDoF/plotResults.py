@@ -76,6 +76,10 @@ results.csv columns:
                             first written time checkMesh fails on
                             (body-fitted), and the gap there in diameters
     U_end                   |U_p| at the end of the record [cm/s]
+    commit                  the repository's commit when the run was made
+                            (runs/.../gitCommit; the scripts may have had
+                            changes not yet committed); empty for the rows
+                            of the first session (scripts of b84f189)
 """
 import csv
 import glob
@@ -195,6 +199,9 @@ def summarise(method, level, run, data):
         "cpu_s": "%.1f" % total,
         "U_end": "%.3f" % speed[-1],
     }
+    commit = os.path.join(run, "gitCommit")
+    if os.path.exists(commit):
+        row["commit"] = (open(commit).read().split() or [""])[0]
     iWindowEnd = next((i for i in range(len(t)) if gap[i] < WINDOW*D), None)
     if iWindowEnd is not None:
         iMax = max(range(iWindowEnd), key=lambda i: speed[i])
@@ -235,7 +242,7 @@ def summarise(method, level, run, data):
 columns = ["method", "level", "cells", "Re_max", "U_max", "t_Re_max",
            "gap_Re_max_d", "cpu_to_2d_s", "Re_max_1d", "t_end", "gap_end_d",
            "end", "cpu_s", "n_reReference", "t_mesh_failed",
-           "gap_mesh_failed_d", "gap_speedup_d", "U_end"]
+           "gap_mesh_failed_d", "gap_speedup_d", "U_end", "commit"]
 
 order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmFoam": 2,
@@ -289,7 +296,8 @@ with open("results.csv", "w", newline="") as f:
 print(open("results.csv").read())
 
 # Repeated runs: the first run and its repeats
-timingColumns = ["method", "level", "tag", "Re_max", "cpu_to_2d_s", "cpu_s"]
+timingColumns = ["method", "level", "tag", "Re_max", "cpu_to_2d_s", "cpu_s",
+                 "commit"]
 if repeats:
     with open("timing.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=timingColumns, restval="",
