@@ -39,7 +39,8 @@ COLUMNS = ["run", "body", "coupling", "maxBodyCo", "deltaT", "cells",
 ORDER = ["disk-explicit", "disk-projection", "disk-projection-maxBodyCo0.1",
          "disk-projection-dt2e-4", "sphere-explicit", "sphere-projection",
          "sphere-projection-maxBodyCo0.1", "sphere-semiImplicit",
-         "sphere-semiImplicit-dt5e-4", "neutral-L3",
+         "sphere-semiImplicit-dt5e-4", "sphere-semiImplicit-ratio5",
+         "neutral-L3",
          "neutral-L4", "neutral-L5"]
 
 
