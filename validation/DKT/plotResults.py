@@ -21,7 +21,9 @@ the body histories, summary.dat, log.blockMesh and log.fbmFoam, and writes
                       each level; the kissing window t = 1.0-1.6 of
                       reference.md section 3 shaded
 
-Usage: plotResults.py [RUNS]   (default: runs/ beside this script)
+Usage: plotResults.py [RUNS [SUFFIX]]   (default: runs/ beside this script;
+SUFFIX names the outputs results<SUFFIX>.csv, trajectories<SUFFIX>.csv and
+dkt<SUFFIX>.png, as ./Allrun -coupling NAME does with -NAME)
 
 Prints a warning for each run whose exit status is not 0 (./Allrun's exit
 status says whether its runs failed). Exit status 1 when no run could be
@@ -137,6 +139,7 @@ def fmt(v):
 
 def main():
     runs = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, 'runs')
+    suffix = sys.argv[2] if len(sys.argv) > 2 else ''
     found = []
     for run in glob.glob(os.path.join(runs, 'level*')):
         m = re.match(r'level(\d+)$', os.path.basename(run))
@@ -155,14 +158,14 @@ def main():
     cols = ['level', 'cells', 'h', 't_end', 'kiss_start', 'kiss_end',
             'min_gap', 't_min_gap', 'tumble', 'max_speed', 'min_wall_gap',
             'overlap_R', 'cpu_s', 'status']
-    with open(os.path.join(here, 'results.csv'), 'w') as f:
+    with open(os.path.join(here, 'results%s.csv' % suffix), 'w') as f:
         w = csv.writer(f, lineterminator='\n')
         w.writerow(cols)
         for r in rows:
             w.writerow([fmt(r.get(c)) for c in cols])
-    print(open(os.path.join(here, 'results.csv')).read(), end='')
+    print(open(os.path.join(here, 'results%s.csv' % suffix)).read(), end='')
 
-    with open(os.path.join(here, 'trajectories.csv'), 'w') as f:
+    with open(os.path.join(here, 'trajectories%s.csv' % suffix), 'w') as f:
         w = csv.writer(f, lineterminator='\n')
         names = ['t', 'x_lower', 'y_lower', 'x_upper', 'y_upper', 'gap']
         w.writerow(['level'] + names)
@@ -177,11 +180,11 @@ def main():
                      os.path.join(runs, 'level%d' % r['level'])))
     if not trajs:
         return 1
-    plot(trajs, rows)
+    plot(trajs, rows, suffix)
     return 0
 
 
-def plot(trajs, rows):
+def plot(trajs, rows, suffix=""):
     fig, ax = plt.subplots(3, 1, figsize=(8, 10), sharex=True)
     colours = plt.rcParams['axes.prop_cycle'].by_key()['color']
     info = {r['level']: r for r in rows}
@@ -217,9 +220,10 @@ def plot(trajs, rows):
     ax[0].legend(fontsize=8, loc='lower left')
     ax[2].plot([], [], 'k:', lw=0.8, label='repulsion range 1.5 h')
     ax[2].legend(fontsize=8)
-    ax[0].set_title('DKT: two disks, rho_s/rho_f = 1.01 (fbmFoam)')
+    ax[0].set_title('DKT: two disks, rho_s/rho_f = 1.01 (fbmFoam%s)'
+                    % suffix.replace('-', ', coupling '))
     fig.tight_layout()
-    fig.savefig(os.path.join(here, 'dkt.png'), dpi=120)
+    fig.savefig(os.path.join(here, 'dkt%s.png' % suffix), dpi=120)
 
 
 if __name__ == '__main__':
