@@ -86,6 +86,15 @@ void correctCoupled
     }
 }
 
+// The sum over the processors of a per-body list, on every processor
+template<class Type>
+void sumOverProcessors(Foam::List<Type>& values)
+{
+    using namespace Foam;
+    Pstream::listCombineGather(values, plusEqOp<Type>());
+    Pstream::listCombineScatter(values);
+}
+
 } // End anonymous namespace
 
 
@@ -143,10 +152,8 @@ void Foam::fbm::couplingModels::semiImplicit::pressureForces
         P[bi] += f;
         Q[bi] += (C[celli] - bodies[bi].centre()) ^ f;
     }
-    Pstream::listCombineGather(P, plusEqOp<vector>());
-    Pstream::listCombineScatter(P);
-    Pstream::listCombineGather(Q, plusEqOp<vector>());
-    Pstream::listCombineScatter(Q);
+    sumOverProcessors(P);
+    sumOverProcessors(Q);
 
     forAll(bodies, bi)
     {
@@ -183,10 +190,8 @@ void Foam::fbm::couplingModels::semiImplicit::shell
         m[bi] += dm;
         J[bi] += dm*(magSqr(r)*symmTensor::I - sqr(r));
     }
-    Pstream::listCombineGather(m, plusEqOp<scalar>());
-    Pstream::listCombineScatter(m);
-    Pstream::listCombineGather(J, plusEqOp<symmTensor>());
-    Pstream::listCombineScatter(J);
+    sumOverProcessors(m);
+    sumOverProcessors(J);
 }
 
 
@@ -503,10 +508,8 @@ void Foam::fbm::couplingModels::semiImplicit::constrain
         warnedStep_ = true;
     }
 
-    Pstream::listCombineGather(nextDampingMass_, plusEqOp<scalar>());
-    Pstream::listCombineScatter(nextDampingMass_);
-    Pstream::listCombineGather(nextDampingInertia_, plusEqOp<symmTensor>());
-    Pstream::listCombineScatter(nextDampingInertia_);
+    sumOverProcessors(nextDampingMass_);
+    sumOverProcessors(nextDampingInertia_);
 }
 
 
@@ -672,17 +675,18 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         const label celli = cells_[i];
         const label bi = label(id[celli]);
         pushedMass[bi] += rhoFluid*weight_[i]*V[celli];
+        const vector Rnew(rigidImpulse(bi, P[bi], Q[bi], C[celli]));
         u[celli] += weight_[i]*
         (
             responseTime(bi)*(gradP[celli] - lastGradP_[i])
-          + rigidImpulse(bi, P[bi], Q[bi], C[celli])
+          + Rnew
           - rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
         );
         const vector f
         (
             rhoFluid*weight_[i]*V[celli]/dt
            *(
-                rigidImpulse(bi, P[bi], Q[bi], C[celli])
+                Rnew
               - rigidImpulse
                 (
                     bi, pressureForce_[bi], pressureTorque_[bi], C[celli]
@@ -692,12 +696,9 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         directForce_[bi] += f;
         directTorque_[bi] += (C[celli] - bodies[bi].centre()) ^ f;
     }
-    Pstream::listCombineGather(directForce_, plusEqOp<vector>());
-    Pstream::listCombineScatter(directForce_);
-    Pstream::listCombineGather(directTorque_, plusEqOp<vector>());
-    Pstream::listCombineScatter(directTorque_);
-    Pstream::listCombineGather(pushedMass, plusEqOp<scalar>());
-    Pstream::listCombineScatter(pushedMass);
+    sumOverProcessors(directForce_);
+    sumOverProcessors(directTorque_);
+    sumOverProcessors(pushedMass);
 
     // The direct force reaches the body one step later, as a lagged mass
     // m_d = rho_f sum w V on the pressure part of its acceleration; a
