@@ -579,7 +579,7 @@ Foam::fbm::footprint Foam::fbm::bodySystem::bodyFootprint() const
 
 Foam::scalar Foam::fbm::bodySystem::maxDeltaT() const
 {
-    // The coupling's own stability limit (semiImplicit)
+    // The coupling's own stability limit (fbm::viscousStepLimit)
     scalar dtMax = coupling_->maxDeltaT();
     deltaTLimit_ = "coupling " + coupling_->type();
     if (maxBodyCo_ >= VGREAT)

@@ -78,8 +78,16 @@ Foam::fbm::couplingModels::explicitForce::explicitForce
         (
             "addedMassCoeff", 0, [](scalar c){ return c >= 0; }
         )
-    )
+    ),
+    free_(system.bodies().size(), false),
+    limit_(dict.optionalSubDict(typeName + "Coeffs"), typeName, 0)
 {
+    const PtrList<body>& bodies = system.bodies();
+    forAll(bodies, bi)
+    {
+        free_[bi] = bodies[bi].translates() || bodies[bi].rotates();
+    }
+
     rejectContactProjection();
 
     checkDensityRatios();
@@ -94,6 +102,15 @@ bool Foam::fbm::couplingModels::explicitForce::beforeFlow()
 }
 
 
+void Foam::fbm::couplingModels::explicitForce::constrain
+(
+    fvMatrix<vector>& UEqn
+) const
+{
+    limit_.update(UEqn, system_.fb(), free_);
+}
+
+
 bool Foam::fbm::couplingModels::explicitForce::afterFlow
 (
     volVectorField& U,
@@ -103,6 +120,28 @@ bool Foam::fbm::couplingModels::explicitForce::afterFlow
 {
     holdForces(force, torque);
     return true;
+}
+
+
+void Foam::fbm::couplingModels::explicitForce::readState
+(
+    const dictionary& state
+)
+{
+    if (limit_.active() && stateHasEntry(state, "viscousDeltaT"))
+    {
+        limit_.read(state.subDict(system_.bodies()[0].name()));
+    }
+}
+
+
+void Foam::fbm::couplingModels::explicitForce::writeState
+(
+    const label bi,
+    Ostream& os
+) const
+{
+    limit_.write(os);
 }
 
 

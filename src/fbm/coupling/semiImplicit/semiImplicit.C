@@ -12,6 +12,7 @@ License
 
 #include "semiImplicit.H"
 #include "bodySystem.H"
+#include "sumOverProcessors.H"
 #include "fvcGrad.H"
 #include "fvcFlux.H"
 #include "fvMatrices.H"
@@ -86,15 +87,6 @@ void correctCoupled
     }
 }
 
-// The sum over the processors of a per-body list, on every processor
-template<class Type>
-void sumOverProcessors(Foam::List<Type>& values)
-{
-    using namespace Foam;
-    Pstream::listCombineGather(values, plusEqOp<Type>());
-    Pstream::listCombineScatter(values);
-}
-
 } // End anonymous namespace
 
 
@@ -163,38 +155,6 @@ void Foam::fbm::couplingModels::semiImplicit::pressureForces
 }
 
 
-void Foam::fbm::couplingModels::semiImplicit::shell
-(
-    scalarList& m,
-    List<symmTensor>& J
-) const
-{
-    const PtrList<body>& bodies = system_.bodies();
-    const vectorField& C = system_.mesh().C().primitiveField();
-    const scalarField& V = system_.mesh().V();
-    const scalarField& id = system_.fb().bodyID();
-    const scalarField& alpha = system_.fb().alpha();
-    const scalar rhoFluid = system_.rhoFluid();
-
-    m.setSize(bodies.size());
-    J.setSize(bodies.size());
-    m = Zero;
-    J = Zero;
-    forAll(cells_, i)
-    {
-        const label celli = cells_[i];
-        const label bi = label(id[celli]);
-        const scalar dm =
-            rhoFluid*max(weight_[i] - alpha[celli], scalar(0))*V[celli];
-        const vector r(C[celli] - bodies[bi].centre());
-        m[bi] += dm;
-        J[bi] += dm*(magSqr(r)*symmTensor::I - sqr(r));
-    }
-    sumOverProcessors(m);
-    sumOverProcessors(J);
-}
-
-
 Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
 (
     const label bi
@@ -206,8 +166,8 @@ Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
     const scalar Vb = b.shape().volume();
     return
         system_.mesh().time().deltaTValue()
-       *(system_.rhoFluid()*Vb + shellMass_[bi])
-       /(b.rho()*Vb + shellMass_[bi] + dampingMass_[bi]);
+       *(system_.rhoFluid()*Vb + inertia_.shellMass(bi))
+       /inertia_.totalMass(bi, b.rho()*Vb);
 }
 
 
@@ -221,8 +181,7 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::rigidImpulse
 {
     const body& b = system_.bodies()[bi];
     const scalar dt = system_.mesh().time().deltaTValue();
-    const scalar M =
-        b.rho()*b.shape().volume() + shellMass_[bi] + dampingMass_[bi];
+    const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume());
     return
         cmptMultiply(planeMask_, dt*P/M)
       + (angularImpulse(bi, dt*Q) ^ (x - b.centre()));
@@ -240,10 +199,7 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
     {
         return Zero;
     }
-    const symmTensor I
-    (
-        b.inertia() + shellInertia_[bi] + dampingInertia_[bi]
-    );
+    const symmTensor I(inertia_.totalInertia(bi, b.inertia()));
     if (cmptSum(axisMask_) == 1)
     {
         // 2D: about the empty direction, a principal direction of I
@@ -266,34 +222,21 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     timeIndex_(-1),
     pressureForce_(system.bodies().size(), Zero),
     pressureTorque_(system.bodies().size(), Zero),
-    shellMass_(system.bodies().size(), Zero),
-    shellInertia_(system.bodies().size(), Zero),
-    dampingMass_(system.bodies().size(), Zero),
-    dampingInertia_(system.bodies().size(), Zero),
     directForce_(system.bodies().size(), Zero),
     directTorque_(system.bodies().size(), Zero),
-    nextDampingMass_(system.bodies().size(), Zero),
-    nextDampingInertia_(system.bodies().size(), Zero),
-    maxViscousRatio_(defaultMaxViscousRatio_),
-    dtLimit_(VGREAT),
-    warnedStep_(false),
+    inertia_(system),
+    limit_
+    (
+        dict.optionalSubDict(typeName + "Coeffs"),
+        typeName,
+        defaultMaxViscousRatio_
+    ),
     lastStepKnown_(false),
     planeMask_(vector::one),
     axisMask_(vector::one)
 {
     rejectContactProjection();
     rejectAddedMassCoeff();
-
-    // The viscous limit of the step (optional semiImplicitCoeffs)
-    const dictionary& coeffs = dict.optionalSubDict(type() + "Coeffs");
-    maxViscousRatio_ = coeffs.getCheckOrDefault<scalar>
-    (
-        "maxViscousRatio", defaultMaxViscousRatio_,
-        [](scalar r){ return r > 0; }
-    );
-    Info<< "fbm: coupling " << type() << ": maxViscousRatio "
-        << maxViscousRatio_
-        << (coeffs.found("maxViscousRatio") ? "" : " (default)") << nl;
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -364,7 +307,7 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
         bool changed = false;
         forAll(bodies, bi)
         {
-            const scalar m = shellMass_[bi] + dampingMass_[bi];
+            const scalar m = inertia_.mass(bi);
             if (!heavy_[bi] || m <= 0) continue;
 
             body& b = bodies[bi];
@@ -381,11 +324,7 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
                 const vector L
                 (
                     (b.inertia() & (s.omega() - omega0[bi]))
-                  + dt*
-                    (
-                        (shellInertia_[bi] + dampingInertia_[bi])
-                      & omegaDot0[bi]
-                    )
+                  + dt*(inertia_.inertia(bi) & omegaDot0[bi])
                 );
                 s.omega() = omega0[bi] + angularImpulse(bi, L);
                 s.angularAcceleration() = (s.omega() - omega0[bi])/dt;
@@ -407,109 +346,10 @@ void Foam::fbm::couplingModels::semiImplicit::constrain
     fvMatrix<vector>& UEqn
 ) const
 {
-    // The viscous (and convective) coupling of each body's cells to the
-    // fluid beside them, from the momentum matrix: over the faces between
-    // a cell of rigid share w_c and a neighbour of smaller share w_n, with
-    // a_cn the neighbour's coefficient in the row of c, the body's force
-    // changes by -D dU within a step when its velocity changes by dU,
-    //     D = rho_f sum a_cn (w_c - w_n),
-    // a lagged stiffness that the explicit force cannot take when dt D > M
-    // (a sphere at R/h 4 and nu dt/h^2 near 1); dt D is the damping mass
-    // advanced with the body from the next step on (the added-damping of
-    // Banks et al. 2017, here from the discrete operator)
-    const fictitiousBoundary& fb = system_.fb();
-    const fvMesh& mesh = system_.mesh();
-    const scalarField& lambda = fb.lambda();
-    const scalarField& id = fb.bodyID();
-    const scalarField& diag = UEqn.diag();
-    const labelList& active = fb.activeCells();
-
-    if (weightField_.size() != mesh.nCells())
-    {
-        weightField_.setSize(mesh.nCells());
-        weightField_ = 0;
-    }
-    for (const label celli : active)
-    {
-        const label bi = label(id[celli]);
-        if (bi >= 0 && heavy_[bi] && diag[celli] > 0)
-        {
-            weightField_[celli] = lambda[celli]/diag[celli];
-        }
-    }
-
-    const PtrList<body>& bodies = system_.bodies();
-    const vectorField& C = mesh.C().primitiveField();
-    const labelUList& own = UEqn.lduAddr().lowerAddr();
-    const labelUList& nei = UEqn.lduAddr().upperAddr();
-    const fvMatrix<vector>& M = UEqn;
-    const scalarField& upper = M.upper();
-    const scalarField& lower = M.lower();
-    const cellList& cells = mesh.cells();
-    const label nInternalFaces = mesh.nInternalFaces();
-    const scalar rhoFluid = system_.rhoFluid();
-    const scalar dt = mesh.time().deltaTValue();
-
-    nextDampingMass_ = Zero;
-    nextDampingInertia_ = Zero;
-    for (const label celli : active)
-    {
-        const scalar wc = weightField_[celli];
-        if (wc <= 0) continue;
-
-        const label bi = label(id[celli]);
-        const vector r(C[celli] - bodies[bi].centre());
-        scalar g = 0;
-        for (const label facei : cells[celli])
-        {
-            if (facei >= nInternalFaces) continue;
-            const bool isOwner = (own[facei] == celli);
-            const label other = isOwner ? nei[facei] : own[facei];
-            const scalar a = -(isOwner ? upper[facei] : lower[facei]);
-            const scalar dw = wc - weightField_[other];
-            if (a > 0 && dw > 0)
-            {
-                g += a*dw;
-            }
-        }
-        const scalar dm = dt*rhoFluid*g;
-        nextDampingMass_[bi] += dm;
-        nextDampingInertia_[bi] += dm*(magSqr(r)*symmTensor::I - sqr(r));
-    }
-    for (const label celli : active)
-    {
-        weightField_[celli] = 0;
-    }
-
-    // The viscous limit of the step: over the bodies' cells, the ratio of
-    // the matrix diagonal's viscous and convective part to its inertial
-    // part V/dt (2 nD nu dt/h^2 on a uniform mesh) at most maxViscousRatio
-    const scalarField& V = mesh.V();
-    scalar ratio = 0;
-    for (const label celli : active)
-    {
-        const label bi = label(id[celli]);
-        if (bi < 0 || !heavy_[bi]) continue;
-        ratio = max(ratio, (diag[celli] - lambda[celli])*dt/V[celli] - 1);
-    }
-    reduce(ratio, maxOp<scalar>());
-    dtLimit_ = (ratio > SMALL) ? maxViscousRatio_*dt/ratio : VGREAT;
-    if (dt > 1.01*dtLimit_ && !warnedStep_)
-    {
-        WarningInFunction
-            << "coupling " << type() << " at time "
-            << mesh.time().timeName() << ": the step " << dt
-            << " is above its viscous stability limit " << dtLimit_
-            << " (the viscous and convective part of the momentum"
-            << " matrix's diagonal is " << ratio << " times its inertial"
-            << " part in the bodies' cells; at most " << maxViscousRatio_
-            << "): the force may oscillate and grow. With"
-            << " adjustTimeStep yes the step is kept below the limit" << endl;
-        warnedStep_ = true;
-    }
-
-    sumOverProcessors(nextDampingMass_);
-    sumOverProcessors(nextDampingInertia_);
+    // The damping mass of this step and the viscous limit of the next,
+    // both read off the momentum matrix
+    inertia_.measureDamping(UEqn, heavy_);
+    limit_.update(UEqn, system_.fb(), heavy_);
 }
 
 
@@ -555,10 +395,7 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
         // this step is taken from the next step on)
         pressureForce_ = lastForce_;
         pressureTorque_ = lastTorque_;
-        shellMass_ = Zero;
-        shellInertia_ = Zero;
-        dampingMass_ = Zero;
-        dampingInertia_ = Zero;
+        inertia_.clear();
         lastStepKnown_ = true;
     }
 
@@ -710,8 +547,7 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     {
         if (!heavy_[bi] || pushedMass[bi] <= 0) continue;
         const body& b = bodies[bi];
-        const scalar M =
-            b.rho()*b.shape().volume() + shellMass_[bi] + dampingMass_[bi];
+        const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume());
         const scalar f = min(scalar(1), maxDirectMass_*M/pushedMass[bi]);
         directForce_[bi] *= f;
         directTorque_[bi] *= f;
@@ -722,9 +558,7 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     // For the next step: this step's pressure force and shell
     pressureForce_ = P;
     pressureTorque_ = Q;
-    shell(shellMass_, shellInertia_);
-    dampingMass_ = nextDampingMass_;
-    dampingInertia_ = nextDampingInertia_;
+    inertia_.update(cells_, weight_);
 }
 
 
@@ -748,11 +582,7 @@ void Foam::fbm::couplingModels::semiImplicit::readState
     // The viscous limit of the step after the restart time
     if (stateHasEntry(state, "viscousDeltaT"))
     {
-        const PtrList<body>& bodies = system_.bodies();
-        dtLimit_ = state.subDict(bodies[0].name()).getCheck<scalar>
-        (
-            "viscousDeltaT", [](scalar dt){ return dt > 0; }
-        );
+        limit_.read(state.subDict(system_.bodies()[0].name()));
     }
 
     // The pressure force and the shell of the step that led to the
@@ -765,16 +595,7 @@ void Foam::fbm::couplingModels::semiImplicit::readState
             const dictionary& d = state.subDict(bodies[bi].name());
             pressureForce_[bi] = d.get<vector>("pressureForce");
             pressureTorque_[bi] = d.get<vector>("pressureTorque");
-            shellMass_[bi] = d.getCheck<scalar>
-            (
-                "shellMass", [](scalar m){ return m >= 0; }
-            );
-            shellInertia_[bi] = d.get<symmTensor>("shellInertia");
-            dampingMass_[bi] = d.getCheck<scalar>
-            (
-                "dampingMass", [](scalar m){ return m >= 0; }
-            );
-            dampingInertia_[bi] = d.get<symmTensor>("dampingInertia");
+            inertia_.read(bi, d);
         }
         lastStepKnown_ = true;
     }
@@ -797,16 +618,10 @@ void Foam::fbm::couplingModels::semiImplicit::writeState
     {
         os.writeEntry("pressureForce", pressureForce_[bi]);
         os.writeEntry("pressureTorque", pressureTorque_[bi]);
-        os.writeEntry("shellMass", shellMass_[bi]);
-        os.writeEntry("shellInertia", shellInertia_[bi]);
-        os.writeEntry("dampingMass", dampingMass_[bi]);
-        os.writeEntry("dampingInertia", dampingInertia_[bi]);
+        inertia_.write(bi, os);
     }
-    if (dtLimit_ < VGREAT)
-    {
-        // The viscous limit of the next step (the same for every body)
-        os.writeEntry("viscousDeltaT", dtLimit_);
-    }
+    // The viscous limit of the next step (the same for every body)
+    limit_.write(os);
 }
 
 
