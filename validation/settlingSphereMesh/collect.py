@@ -12,23 +12,37 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
     speed_0.1, speed_0.15, speed_0.25  |U| at the last step at or before
                             t = 0.1, 0.15, 0.25 (empty when the record
                             ends before)
+    mean_0.2_0.25           time-weighted mean of |U| over the steps in
+                            (0.2, 0.25] (the sphere near its terminal
+                            speed; filters a step-to-step oscillation)
+    range_0.2_0.25_pct      (max - min)/mean of |U| over those steps in %
     y_start, y_end          height of the centre at the first and last step
     bodyCo_max              largest body Courant number |U| dt / h
     cpu_s                   fbmFoam's last ExecutionTime
     cpu_ms_step             cpu_s per time step (ms)
+    p_iters_step            GAMG iterations of p per time step (all the
+                            step's pressure solves)
+    U_sweeps_step           smoothSolver sweeps of Ux per time step
+    warnings, warn_t, warn_ratio  coupling semiImplicit's warnings that a
+                            step was above its viscous limit: how many,
+                            the time of the first, the largest ratio it
+                            gives (viscous/inertial diagonal; the limit is
+                            maxViscousRatio)
     cpu_us_cellstep         cpu_s per cell and time step (microseconds)
     status                  exitStatus of the tutorial's Allrun (0: done)
 
 history.csv: run, t, speed (|U| of the sphere at every step; the chart).
 
 convergence.csv, one row per coupling and quantity (speed at t = 0.1,
-0.15, 0.25) over R/h = 3, 4, 6 (h = 1/60, 1/80, 1/120): the three values,
+0.15, 0.25; t = 0.2-0.25: mean_0.2_0.25) over R/h = 3, 4, 6 (h = 1/60, 1/80, 1/120): the three values,
 the change from R/h 4 to 6 in %, whether the differences have one sign
 (monotone), and if so the observed order p from
     (u3 - u4)/(u4 - u6) = (h3^p - h4^p)/(h4^p - h6^p)
 (the ratios 4/3 and 3/2 differ, so p is found by bisection in (0.05, 10))
 and the Richardson-extrapolated value u6 + (u6 - u4)/((h4/h6)^p - 1);
 empty when the levels do not converge monotonically.
+
+Runs without runs/<name>/exitStatus (still running) are left out.
 
 Usage: /usr/bin/python3 collect.py
 """
@@ -41,8 +55,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 COLUMNS = ["run", "body", "coupling", "R_h", "h", "cells", "steps", "t_end",
            "max_speed", "t_max", "speed_0.1", "speed_0.15", "speed_0.25",
-           "y_start", "y_end", "bodyCo_max", "cpu_s", "cpu_ms_step",
-           "cpu_us_cellstep", "status"]
+           "mean_0.2_0.25", "range_0.2_0.25_pct", "y_start", "y_end", "bodyCo_max", "cpu_s", "cpu_ms_step",
+           "cpu_us_cellstep", "p_iters_step", "U_sweeps_step",
+           "warnings", "warn_t", "warn_ratio", "status"]
 ORDER = ["explicit-RH3", "explicit-RH4", "explicit-RH6",
          "semiImplicit-RH3", "semiImplicit-RH4", "semiImplicit-RH6",
          "disk2D-L4"]
@@ -60,6 +75,34 @@ def lastMatch(path, pattern):
     except OSError:
         pass
     return value
+
+
+def iterations(path, field):
+    """Sum of the iterations of the solves of field in a solver log"""
+    total = 0
+    with open(path, errors="replace") as f:
+        for line in f:
+            m = re.search(r"Solving for %s,.*No Iterations (\d+)" % field,
+                          line)
+            if m:
+                total += int(m.group(1))
+    return total
+
+
+def viscousWarnings(path):
+    """(count, first time, largest ratio) of the viscous-limit warnings"""
+    found = []
+    with open(path, errors="replace") as f:
+        for line in f:
+            m = re.search(r"coupling semiImplicit at time ([0-9.e+-]+): "
+                          r"the step .* is above its viscous.* is "
+                          r"([0-9.e+-]+) times", line)
+            if m:
+                found.append((float(m.group(1)), float(m.group(2))))
+    if not found:
+        return 0, "", ""
+    return (len(found), "%.4g" % found[0][0],
+            "%.3g" % max(r for t, r in found))
 
 
 def collectRun(run):
@@ -89,6 +132,11 @@ def collectRun(run):
         s = [v for ti, v in zip(t, speed) if ti <= time + 1e-9]
         return "%.5g" % s[-1] if s and t[-1] >= time - 1e-9 else ""
 
+    window = [(v, t[i] - t[i - 1]) for i, v in enumerate(speed)
+              if i and 0.2 + 1e-9 < t[i] <= 0.25 + 1e-9]
+    mean = sum(v*dt for v, dt in window)/sum(dt for v, dt in window) \
+        if window and t[-1] >= 0.25 - 1e-9 else None
+
     props = open(os.path.join(run, "constant/fbmProperties")).read()
     m = re.search(r"^coupling\s+(\w+)\s*;", props, re.M)
     coupling = m.group(1) if m else "explicit"
@@ -111,9 +159,19 @@ def collectRun(run):
            "cpu_us_cellstep": "%.4g" % (1e6*float(cpu)/len(rows)
                                         / float(cells))
            if cpu and cells else "",
+           "p_iters_step": "%.3g" % (iterations(os.path.join(
+               run, "log.fbmFoam"), "p")/len(rows)),
+           "U_sweeps_step": "%.3g" % (iterations(os.path.join(
+               run, "log.fbmFoam"), "Ux")/len(rows)),
            "status": status}
+    row["warnings"], row["warn_t"], row["warn_ratio"] = viscousWarnings(
+        os.path.join(run, "log.fbmFoam"))
     for time in TIMES:
         row["speed_" + time] = at(float(time))
+    row["mean_0.2_0.25"] = "%.5g" % mean if mean else ""
+    row["range_0.2_0.25_pct"] = "%.3g" % (
+        100*(max(v for v, dt in window) - min(v for v, dt in window))/mean) \
+        if mean else ""
     history = [(name, "%.6g" % ti, "%.6g" % v) for ti, v in zip(t, speed)] \
         if body == "sphere" else []
     return row, history
@@ -149,8 +207,8 @@ def convergence(results):
         if None in rows:
             continue
         h = [float(r["h"]) for r in rows]
-        for time in TIMES:
-            key = "speed_" + time
+        for time in TIMES + ["0.2-0.25"]:
+            key = "speed_" + time if time in TIMES else "mean_0.2_0.25"
             if "" in [r[key] for r in rows]:
                 continue
             u = [float(r[key]) for r in rows]
@@ -175,7 +233,7 @@ def convergence(results):
 def main():
     runs = [r for r in glob.glob(os.path.join(HERE, "runs", "*"))
             if os.path.basename(r) in ORDER
-            and os.path.isfile(os.path.join(r, "log.fbmFoam"))]
+            and os.path.isfile(os.path.join(r, "exitStatus"))]
     collected = {os.path.basename(r): collectRun(r) for r in runs}
     results = {n: c[0] for n, c in collected.items()}
     histories = {n: c[1] for n, c in collected.items()}
