@@ -85,7 +85,7 @@ def main():
     ax2.set_ylabel("settling speed")
     ax2.set_xlim(0, 1.15*hMax)
     ax2.grid(alpha=0.3)
-    ax2.legend(fontsize=7, loc="lower right")
+    ax2.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "speed.png"), dpi=120)
     print("Wrote speed.png")
