@@ -47,15 +47,39 @@ Foam::fbm::predictorExtrapolation::predictorExtrapolation
     const surfaceScalarField& phi
 )
 :
-    extrapolate_(pimpleDict.getOrDefault<bool>("extrapolatePredictor", false))
+    extrapolate_(pimpleDict.getOrDefault<bool>("extrapolatePredictor", false)),
+    extrapolatePressure_(extrapolate_)
 {
     if (!extrapolate_)
     {
+        if (pimpleDict.found("extrapolatePressure"))
+        {
+            FatalIOErrorInFunction(pimpleDict)
+                << "extrapolatePressure without extrapolatePredictor yes in "
+                << pimpleDict.name() << nl
+                << "    It chooses whether the extrapolated predictor"
+                << " extrapolates the pressure too: remove it or set"
+                << " extrapolatePredictor yes"
+                << exit(FatalIOError);
+        }
         return;
     }
 
-    Info<< "fbm: extrapolatePredictor: flux and pressure of the first"
-        << " momentum predictor extrapolated in time" << nl;
+    extrapolatePressure_ =
+        pimpleDict.getOrDefault<bool>("extrapolatePressure", true);
+    if (extrapolatePressure_)
+    {
+        Info<< "fbm: extrapolatePredictor: flux and pressure of the first"
+            << " momentum predictor extrapolated in time"
+            << (pimpleDict.found("extrapolatePressure")
+                ? "" : " (extrapolatePressure yes, the default)") << nl;
+    }
+    else
+    {
+        Info<< "fbm: extrapolatePredictor: flux of the first momentum"
+            << " predictor extrapolated in time, its pressure lagged"
+            << " (extrapolatePressure no)" << nl;
+    }
 
     const Time& runTime = p.time();
     if (runTime.value() > 0 && (!p.nOldTimes() || !phi.nOldTimes()))
@@ -87,7 +111,7 @@ Foam::fbm::predictorExtrapolation::pressure
     const bool firstIter
 ) const
 {
-    return extrapolated(p, firstIter);
+    return extrapolated(p, firstIter && extrapolatePressure_);
 }
 
 
