@@ -6,6 +6,14 @@ results.csv, one row per run folder runs/<name>, from the body's record
 (postProcessing/fbmBodies/0/<body>.dat: Time Fx Fy Fz Tx Ty Tz x y z Ux Uy
 Uz wx wy wz; as ../projectionAccuracy/collect.py):
     body, coupling          sphere or disk2D; explicit or semiImplicit
+    variant                 the run's name before -RH: explicit,
+                            semiImplicit, explicitExtrap, semiImplicitExtrap,
+                            explicitExtrapP
+    predictor               lagged, extrapolated flux (PIMPLE
+                            extrapolatePredictor yes, extrapolatePressure
+                            no, with minIter 10 for U) or extrapolated
+                            (flux and pressure; with nCorrectors N when
+                            not the tutorial's 2)
     R_h, h, cells           radius over cell size, cell size, cells
     steps, t_end            time steps and last time of the record
     max_speed, t_max        largest |U| and when
@@ -33,7 +41,7 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
 
 history.csv: run, t, speed (|U| of the sphere at every step; the chart).
 
-convergence.csv, one row per coupling and quantity (speed at t = 0.1,
+convergence.csv, one row per variant (column coupling) and quantity (speed at t = 0.1,
 0.15, 0.25; t = 0.2-0.25: mean_0.2_0.25) over R/h = 3, 4, 6 (h = 1/60, 1/80, 1/120): the three values,
 the change from R/h 4 to 6 in %, whether the differences have one sign
 (monotone), and if so the observed order p from
@@ -57,10 +65,12 @@ COLUMNS = ["run", "body", "coupling", "R_h", "h", "cells", "steps", "t_end",
            "max_speed", "t_max", "speed_0.1", "speed_0.15", "speed_0.25",
            "mean_0.2_0.25", "range_0.2_0.25_pct", "y_start", "y_end", "bodyCo_max", "cpu_s", "cpu_ms_step",
            "cpu_us_cellstep", "p_iters_step", "U_sweeps_step",
-           "warnings", "warn_t", "warn_ratio", "status"]
-ORDER = ["explicit-RH3", "explicit-RH4", "explicit-RH6",
-         "semiImplicit-RH3", "semiImplicit-RH4", "semiImplicit-RH6",
-         "disk2D-L4"]
+           "warnings", "warn_t", "warn_ratio", "status", "variant",
+           "predictor"]
+VARIANTS = ["explicit", "semiImplicit", "explicitExtrap", "semiImplicitExtrap",
+            "explicitExtrapP"]
+ORDER = ["%s-RH%d" % (v, n) for v in VARIANTS for n in (3, 4, 6)] \
+    + ["disk2D-L4"]
 TIMES = ["0.1", "0.15", "0.25"]
 
 
@@ -103,6 +113,20 @@ def viscousWarnings(path):
         return 0, "", ""
     return (len(found), "%.4g" % found[0][0],
             "%.3g" % max(r for t, r in found))
+
+
+def predictor(fvSolution):
+    """lagged, extrapolated (flux and pressure) or extrapolated flux"""
+    text = open(fvSolution).read()
+    if not re.search(r"^\s*extrapolatePredictor\s+(yes|on|true)\s*;",
+                     text, re.M):
+        return "lagged"
+    if re.search(r"^\s*extrapolatePressure\s+(no|off|false)\s*;", text,
+                 re.M):
+        return "extrapolated flux"
+    m = re.search(r"^\s*nCorrectors\s+(\d+)\s*;", text, re.M)
+    return "extrapolated" + (", nCorrectors %s" % m.group(1)
+                             if m and m.group(1) != "2" else "")
 
 
 def collectRun(run):
@@ -163,7 +187,9 @@ def collectRun(run):
                run, "log.fbmFoam"), "p")/len(rows)),
            "U_sweeps_step": "%.3g" % (iterations(os.path.join(
                run, "log.fbmFoam"), "Ux")/len(rows)),
-           "status": status}
+           "status": status,
+           "variant": name.split("-RH")[0] if body == "sphere" else "",
+           "predictor": predictor(os.path.join(run, "system/fvSolution"))}
     row["warnings"], row["warn_t"], row["warn_ratio"] = viscousWarnings(
         os.path.join(run, "log.fbmFoam"))
     for time in TIMES:
@@ -202,7 +228,7 @@ def order(u, h):
 
 def convergence(results):
     out = []
-    for coupling in ("explicit", "semiImplicit"):
+    for coupling in VARIANTS:
         rows = [results.get("%s-RH%d" % (coupling, n)) for n in (3, 4, 6)]
         if None in rows:
             continue

@@ -3,11 +3,13 @@
 
 speed.png, from history.csv and results.csv / convergence.csv:
   left   the sphere's settling speed |U| against time, one colour per
-         R/h (3, 4, 6), solid the explicit coupling (addedMassCoeff 2),
-         dashed coupling semiImplicit (maxViscousRatio 5)
+         R/h (3, 4, 6), one line style per variant: the explicit
+         coupling (addedMassCoeff 2), coupling semiImplicit
+         (maxViscousRatio 5), each with the lagged and the extrapolated
+         predictor
   right  the speed at t = 0.25 (filled markers) and its mean over
          t = 0.2-0.25 (open markers) against the cell size h for both
-         couplings, with the Richardson-extrapolated value at h = 0 (star)
+         couplings, with the Richardson-extrapolated value of the mean at h = 0 (star)
          where the three levels converge monotonically (convergence.csv)
 
 Usage: /usr/bin/python3 plot.py     (Debian's python3 with matplotlib)
@@ -22,7 +24,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 COLOURS = {"3": "tab:blue", "4": "tab:orange", "6": "tab:green"}
 STYLES = {"explicit": ("-", "o", "explicit, addedMassCoeff 2"),
-          "semiImplicit": ("--", "s", "semiImplicit, maxViscousRatio 5")}
+          "semiImplicit": ("--", "s", "semiImplicit, maxViscousRatio 5"),
+          "explicitExtrap": ("-.", "^", "explicit, extrapolated flux"),
+          "semiImplicitExtrap": (":", "D",
+                                 "semiImplicit, extrapolated flux"),
+          "explicitExtrapP": ((0, (5, 1)), "v", "explicit, extrapolated flux"
+                              " and pressure, 3 PISO correctors")}
 
 
 def read(name):
@@ -30,18 +37,23 @@ def read(name):
     return list(csv.DictReader(open(path))) if os.path.isfile(path) else []
 
 
+def variant(r):
+    return r.get("variant") or r["run"].split("-RH")[0]
+
+
 def main():
     results = [r for r in read("results.csv") if r["body"] == "sphere"]
     history = read("history.csv")
     conv = read("convergence.csv")
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 5))
     for r in results:
         t = [float(h["t"]) for h in history if h["run"] == r["run"]]
         u = [float(h["speed"]) for h in history if h["run"] == r["run"]]
-        style = STYLES[r["coupling"]][0]
-        ax1.plot(t, u, style, color=COLOURS.get(r["R_h"], "k"), lw=1.2,
+        style = STYLES[variant(r)][0]
+        ax1.plot(t, u, linestyle=style, color=COLOURS.get(r["R_h"], "k"),
+                 lw=1.2,
                  label="R/h %s, %s (%s cells)"
-                 % (r["R_h"], r["coupling"], format(int(r["cells"]), ",")))
+                 % (r["R_h"], variant(r), format(int(r["cells"]), ",")))
     ax1.set_xlabel("t")
     ax1.set_ylabel("settling speed |U|")
     ax1.set_xlim(0, 0.25)
@@ -53,7 +65,7 @@ def main():
 
     hMax = max([float(r["h"]) for r in results] + [0.01])
     for coupling, (style, marker, label) in STYLES.items():
-        rows = sorted((r for r in results if r["coupling"] == coupling
+        rows = sorted((r for r in results if variant(r) == coupling
                        and r["speed_0.25"]), key=lambda r: float(r["h"]))
         if not rows:
             continue
@@ -62,7 +74,8 @@ def main():
         for key, t, fill in (("speed_0.25", "0.25", "full"),
                              ("mean_0.2_0.25", "0.2-0.25", "none")):
             u = [float(r[key]) for r in rows]
-            line, = ax2.plot(h, u, style + marker, color=colour,
+            line, = ax2.plot(h, u, linestyle=style, marker=marker,
+                             color=colour,
                              fillstyle=fill, lw=1.2 if fill == "full"
                              else 0.8,
                              label="%s: %s" % (label, "at t = 0.25"
@@ -74,7 +87,8 @@ def main():
                     ax2.annotate("R/h %s" % r["R_h"], (hi, ui), fontsize=7,
                                  textcoords="offset points", xytext=(4, 4))
             ext = [c for c in conv if c["coupling"] == coupling
-                   and c["t"] == t and c["extrapolated"]]
+                   and c["t"] == t and c["extrapolated"]
+                   and t == "0.2-0.25"]
             if ext:
                 e = float(ext[0]["extrapolated"])
                 ax2.plot([0, h[0]], [e, u[0]], ":", color=colour, lw=0.8)
@@ -85,7 +99,7 @@ def main():
     ax2.set_ylabel("settling speed")
     ax2.set_xlim(0, 1.15*hMax)
     ax2.grid(alpha=0.3)
-    ax2.legend(fontsize=7, loc="upper left")
+    ax2.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "speed.png"), dpi=120)
     print("Wrote speed.png")
