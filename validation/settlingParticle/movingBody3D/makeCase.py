@@ -15,7 +15,9 @@ h = R/(R/h):
 Both use the same mesh and numerics: one PIMPLE outer corrector, 2 PISO
 correctors, `minIter 10` in the U solver, Euler, the time step fixed at
 dt (body Courant number V dt/h); predictor 'extrapolated'
-(`extrapolatePredictor yes`, the settlingParticle tutorial's settings) or
+(`extrapolatePredictor yes`, the settlingParticle tutorial's settings),
+'extrapolatedFlux' (the same with `extrapolatePressure no`: the flux
+extrapolated, the pressure lagged) or
 'lagged' (`extrapolatePredictor no`, minIter kept). The body frame's step
 is free (its flow is steady): maxCo MAXCO (default 1), DT the first step.
 
@@ -36,8 +38,8 @@ maxCo = sys.argv[9] if len(sys.argv) > 9 else "1"
 RH = float(RH)
 if kind not in ("bodyFrame", "moving"):
     sys.exit("makeCase.py: KIND is bodyFrame or moving")
-if predictor not in ("extrapolated", "lagged"):
-    sys.exit("makeCase.py: PREDICTOR is extrapolated or lagged")
+if predictor not in ("extrapolated", "extrapolatedFlux", "lagged"):
+    sys.exit("makeCase.py: PREDICTOR is extrapolated, extrapolatedFlux or lagged")
 
 h = R/RH
 nxz, ny = round(W/h), round(L/h)
@@ -78,8 +80,10 @@ edit(case + "/system/fvSolution", [
     ("        relTol          0;\n    }\n}",
      "        relTol          0;\n        minIter         10;\n    }\n}"),
     ("    nOuterCorrectors    1;\n",
-     "    nOuterCorrectors    1;\n    extrapolatePredictor %s;\n"
-     % ("yes" if predictor == "extrapolated" else "no"))])
+     "    nOuterCorrectors    1;\n    extrapolatePredictor %s;\n%s"
+     % ("no" if predictor == "lagged" else "yes",
+        "    extrapolatePressure no;\n" if predictor == "extrapolatedFlux"
+        else ""))])
 
 if kind == "moving":
     # The step fixed: body Courant number V dt/h
