@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bodySystem.H"
+#include "sumOverProcessors.H"
 #include "bodyInput.H"
 #include "fvMatrices.H"
 #include "Time.H"
@@ -718,10 +719,8 @@ void Foam::fbm::bodySystem::calcForces
     model.calcForces(bodyFootprint(), U, p, nuEff, force, torque);
 
     // Sum the processors' parts
-    Pstream::listCombineGather(force, plusEqOp<vector>());
-    Pstream::listCombineScatter(force);
-    Pstream::listCombineGather(torque, plusEqOp<vector>());
-    Pstream::listCombineScatter(torque);
+    sumOverProcessors(force);
+    sumOverProcessors(torque);
 }
 
 

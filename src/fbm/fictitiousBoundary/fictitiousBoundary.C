@@ -12,6 +12,7 @@ License
 
 #include "fictitiousBoundary.H"
 #include "body.H"
+#include "sumOverProcessors.H"
 #include "fvMatrices.H"
 #include "HashSet.H"
 #include "Random.H"
@@ -251,8 +252,7 @@ Foam::scalarList Foam::fbm::fictitiousBoundary::coveredVolumes() const
     {
         vol[bi] = bodies_[bi].localCoveredVolume(mesh_);
     }
-    Pstream::listCombineGather(vol, plusEqOp<scalar>());
-    Pstream::listCombineScatter(vol);
+    sumOverProcessors(vol);
     return vol;
 }
 

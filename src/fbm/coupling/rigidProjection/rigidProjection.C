@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidProjection.H"
+#include "sumOverProcessors.H"
 #include "bodySystem.H"
 #include "fvMatrices.H"
 #include "addToRunTimeSelectionTable.H"
@@ -119,13 +120,10 @@ void Foam::fbm::couplingModels::rigidProjection::projectionForces
     }
     for (List<vector>* l : {&dP, &dL, &Ku, &Lu})
     {
-        Pstream::listCombineGather(*l, plusEqOp<vector>());
-        Pstream::listCombineScatter(*l);
+        sumOverProcessors(*l);
     }
-    Pstream::listCombineGather(K, plusEqOp<scalar>());
-    Pstream::listCombineScatter(K);
-    Pstream::listCombineGather(KJ, plusEqOp<symmTensor>());
-    Pstream::listCombineScatter(KJ);
+    sumOverProcessors(K);
+    sumOverProcessors(KJ);
 
     // The body's new velocity conserves the momentum of the body and of
     // the fluid share the blend moves:
