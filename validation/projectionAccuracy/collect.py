@@ -40,6 +40,7 @@ ORDER = ["disk-explicit", "disk-projection", "disk-projection-maxBodyCo0.1",
          "disk-projection-dt2e-4", "sphere-explicit", "sphere-projection",
          "sphere-projection-maxBodyCo0.1", "sphere-semiImplicit",
          "sphere-semiImplicit-dt5e-4", "sphere-semiImplicit-ratio5",
+         "sphere-semiImplicit-ratio8", "sphere-semiImplicit-ratio12",
          "neutral-L3",
          "neutral-L4", "neutral-L5"]
 
