@@ -79,6 +79,33 @@ def history(case, name):
     return {c: data[:, i] for i, c in enumerate(columns)}
 
 
+def bodyRecord(case, name):
+    """One body's record postProcessing/fbmBodies/0/<name>.dat as rows of
+    floats (Time Fx Fy Fz Tx Ty Tz x y z Ux Uy Uz wx wy wz), its times and
+    its speed |U| at each row (a run without restarts; see history for
+    joined restarts)."""
+    rows = [[float(x) for x in l.split()]
+            for l in open(os.path.join(case, 'postProcessing', 'fbmBodies',
+                                       '0', name + '.dat'))
+            if not l.startswith('#')]
+    t = [r[0] for r in rows]
+    speed = [(r[10]**2 + r[11]**2 + r[12]**2)**0.5 for r in rows]
+    return rows, t, speed
+
+
+def largestBodyCourant(t, speed, h):
+    """Largest |U| dt/h over a record (dt the step to each row)."""
+    return max(speed[i]*(t[i] - (t[i - 1] if i else 0.0))/h
+               for i in range(len(t)))
+
+
+def speedAt(t, speed, time):
+    """The speed at the last row at or before time, '%.5g'-formatted, or ''
+    when the record ends before time."""
+    s = [v for ti, v in zip(t, speed) if ti <= time + 1e-9]
+    return '%.5g' % s[-1] if s and t[-1] >= time - 1e-9 else ''
+
+
 def summary(case):
     """summary.dat joined over restarts (see history)."""
     return history(case, 'summary')

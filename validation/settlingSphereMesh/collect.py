@@ -58,6 +58,11 @@ import csv
 import glob
 import os
 import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin"))
+import fbmOutput  # noqa: E402  (bin/fbmOutput.py: the shared reader)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -142,19 +147,12 @@ def collectRun(run):
                            open(os.path.join(run, "system/blockMeshDict"))
                            .read()).group(1))
         h = 0.5/nx
-    rows = [[float(x) for x in l.split()]
-            for l in open(os.path.join(run, "postProcessing/fbmBodies/0",
-                                       bodyFile + ".dat"))
-            if not l.startswith("#")]
-    t = [r[0] for r in rows]
-    speed = [(r[10]**2 + r[11]**2 + r[12]**2)**0.5 for r in rows]
+    rows, t, speed = fbmOutput.bodyRecord(run, bodyFile)
     iMax = max(range(len(rows)), key=lambda i: speed[i])
-    co = max(speed[i]*(t[i] - (t[i - 1] if i else 0.0))/h
-             for i in range(len(rows)))
+    co = fbmOutput.largestBodyCourant(t, speed, h)
 
     def at(time):
-        s = [v for ti, v in zip(t, speed) if ti <= time + 1e-9]
-        return "%.5g" % s[-1] if s and t[-1] >= time - 1e-9 else ""
+        return fbmOutput.speedAt(t, speed, time)
 
     window = [(v, t[i] - t[i - 1]) for i, v in enumerate(speed)
               if i and 0.2 + 1e-9 < t[i] <= 0.25 + 1e-9]
