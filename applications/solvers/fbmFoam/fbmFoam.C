@@ -80,6 +80,9 @@ int main(int argc, char *argv[])
 
     turbulence->validate();
 
+    // The coupling's stability limit of the first step (fbm::viscousStepLimit)
+    fbm.estimateMaxDeltaT(turbulence->nuEff());
+
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
     Info<< "\nStarting time loop\n" << endl;

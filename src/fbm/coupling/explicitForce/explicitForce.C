@@ -102,6 +102,15 @@ bool Foam::fbm::couplingModels::explicitForce::beforeFlow()
 }
 
 
+void Foam::fbm::couplingModels::explicitForce::estimateMaxDeltaT
+(
+    const volScalarField& nuEff
+)
+{
+    limit_.estimate(nuEff, system_.fb(), free_);
+}
+
+
 void Foam::fbm::couplingModels::explicitForce::constrain
 (
     fvMatrix<vector>& UEqn

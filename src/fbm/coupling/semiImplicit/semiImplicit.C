@@ -341,6 +341,15 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
 }
 
 
+void Foam::fbm::couplingModels::semiImplicit::estimateMaxDeltaT
+(
+    const volScalarField& nuEff
+)
+{
+    limit_.estimate(nuEff, system_.fb(), heavy_);
+}
+
+
 void Foam::fbm::couplingModels::semiImplicit::constrain
 (
     fvMatrix<vector>& UEqn

@@ -13,6 +13,8 @@ License
 #include "viscousStepLimit.H"
 #include "fictitiousBoundary.H"
 #include "fvMatrices.H"
+#include "volFields.H"
+#include "emptyFvPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -51,6 +53,70 @@ Foam::fbm::viscousStepLimit::viscousStepLimit
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::viscousStepLimit::estimate
+(
+    const volScalarField& nuEff,
+    const fictitiousBoundary& fb,
+    const boolList& selected
+)
+{
+    if (!active() || dtLimit_ < VGREAT)
+    {
+        return;
+    }
+
+    const fvMesh& mesh = nuEff.mesh();
+    const cellList& cellFaces = mesh.cells();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const scalarField& w = mesh.weights();
+    const scalarField& magSf = mesh.magSf();
+    const scalarField& delta = mesh.nonOrthDeltaCoeffs();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const scalarField& nu = nuEff.primitiveField();
+    const scalarField& id = fb.bodyID();
+    const scalarField& V = mesh.V();
+
+    // Over the bodies' cells, the viscous part of the diagonal per unit
+    // time step, sum nu_f |S_f| delta_f / V
+    scalar ratioPerDt = 0;
+    for (const label celli : fb.activeCells())
+    {
+        const label bi = label(id[celli]);
+        if (bi < 0 || !selected[bi]) continue;
+
+        scalar sum = 0;
+        for (const label facei : cellFaces[celli])
+        {
+            if (mesh.isInternalFace(facei))
+            {
+                const scalar nuf =
+                    w[facei]*nu[own[facei]] + (1 - w[facei])*nu[nei[facei]];
+                sum += nuf*magSf[facei]*delta[facei];
+                continue;
+            }
+            const label patchi = patches.whichPatch(facei);
+            const fvPatch& fp = mesh.boundary()[patchi];
+            if (isA<emptyFvPatch>(fp)) continue;
+            const label i = facei - fp.start();
+            sum +=
+                nuEff.boundaryField()[patchi][i]
+               *mesh.magSf().boundaryField()[patchi][i]
+               *mesh.nonOrthDeltaCoeffs().boundaryField()[patchi][i];
+        }
+        ratioPerDt = max(ratioPerDt, sum/V[celli]);
+    }
+    reduce(ratioPerDt, maxOp<scalar>());
+
+    if (ratioPerDt > VSMALL)
+    {
+        dtLimit_ = maxRatio_/ratioPerDt;
+        Info<< "fbm: coupling " << coupling_ << ": first step at most "
+            << dtLimit_ << " (viscous limit estimated from nuEff)" << nl;
+    }
+}
+
 
 void Foam::fbm::viscousStepLimit::update
 (
