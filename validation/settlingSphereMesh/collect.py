@@ -121,13 +121,20 @@ def viscousWarnings(path):
 
 
 def predictor(fvSolution):
-    """lagged, extrapolated (flux and pressure) or extrapolated flux"""
+    """lagged, extrapolated (flux and pressure) or extrapolated flux; the
+    pressure as the run's log says (extrapolatePressure's default was yes
+    before 2026-12-03 and is no since)"""
     text = open(fvSolution).read()
     if not re.search(r"^\s*extrapolatePredictor\s+(yes|on|true)\s*;",
                      text, re.M):
         return "lagged"
-    if re.search(r"^\s*extrapolatePressure\s+(no|off|false)\s*;", text,
-                 re.M):
+    log = os.path.join(os.path.dirname(os.path.dirname(fvSolution)),
+                       "log.fbmFoam")
+    logText = open(log).read() if os.path.exists(log) else ""
+    if "extrapolatePredictor: flux and pressure" not in logText:
+        if "extrapolatePredictor: flux of the first" not in logText:
+            sys.exit("collect.py: %s does not say what the predictor"
+                     " extrapolated" % log)
         return "extrapolated flux"
     m = re.search(r"^\s*nCorrectors\s+(\d+)\s*;", text, re.M)
     return "extrapolated" + (", nCorrectors %s" % m.group(1)

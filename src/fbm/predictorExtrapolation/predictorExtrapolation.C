@@ -66,19 +66,19 @@ Foam::fbm::predictorExtrapolation::predictorExtrapolation
     }
 
     extrapolatePressure_ =
-        pimpleDict.getOrDefault<bool>("extrapolatePressure", true);
+        pimpleDict.getOrDefault<bool>("extrapolatePressure", false);
     if (extrapolatePressure_)
     {
         Info<< "fbm: extrapolatePredictor: flux and pressure of the first"
-            << " momentum predictor extrapolated in time"
-            << (pimpleDict.found("extrapolatePressure")
-                ? "" : " (extrapolatePressure yes, the default)") << nl;
+            << " momentum predictor extrapolated in time" << nl;
     }
     else
     {
         Info<< "fbm: extrapolatePredictor: flux of the first momentum"
             << " predictor extrapolated in time, its pressure lagged"
-            << " (extrapolatePressure no)" << nl;
+            << " (extrapolatePressure no"
+            << (pimpleDict.found("extrapolatePressure") ? "" : ", the default")
+            << ")" << nl;
     }
 
     const Time& runTime = p.time();

@@ -82,8 +82,9 @@ edit(case + "/system/fvSolution", [
     ("    nOuterCorrectors    1;\n",
      "    nOuterCorrectors    1;\n    extrapolatePredictor %s;\n%s"
      % ("no" if predictor == "lagged" else "yes",
-        "    extrapolatePressure no;\n" if predictor == "extrapolatedFlux"
-        else ""))])
+        "    extrapolatePressure %s;\n"
+        % ("no" if predictor == "extrapolatedFlux" else "yes")
+        if predictor != "lagged" else ""))])
 
 if kind == "moving":
     # The step fixed: body Courant number V dt/h
