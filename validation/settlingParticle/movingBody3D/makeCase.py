@@ -76,6 +76,11 @@ edit(case + "/system/controlDict", [
 edit(case + "/constant/fbmProperties", [
     ("translate   yes;", "translate   no;"),
     ("rotate      yes;", "rotate      no;")])
+# The tutorial's predictor taken out (it extrapolates the flux since
+# 2026-12-03); PREDICTOR puts back the one wanted
+edit(case + "/system/fvSolution", [
+    (r"\n *(extrapolatePredictor|extrapolatePressure|minIter) .*;", "")],
+    regex=True)
 edit(case + "/system/fvSolution", [
     ("        relTol          0;\n    }\n}",
      "        relTol          0;\n        minIter         10;\n    }\n}"),
