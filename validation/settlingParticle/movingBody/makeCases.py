@@ -12,21 +12,14 @@ The drag of the two must agree (Galilean invariance); the difference is the
 error of the moving interface. Usage: makeCases.py TUTORIAL DEST V
 """
 import os
-import re
 import shutil
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "bin"))
+from fbmCaseEdit import edit, bodyFrameInflow  # noqa: E402  (bin/fbmCaseEdit.py)
+
 tutorial, dest, V = sys.argv[1], sys.argv[2], sys.argv[3]
-
-
-def edit(path, pairs, regex=False):
-    s = open(path).read()
-    for a, b in pairs:
-        n = len(re.findall(a, s)) if regex else s.count(a)
-        if n == 0:
-            sys.exit("makeCases.py: '%s' not found in %s" % (a, path))
-        s = re.sub(a, b, s) if regex else s.replace(a, b)
-    open(path, 'w').write(s)
 
 
 for name in ("bodyFrame", "moving"):
@@ -68,17 +61,4 @@ for name in ("bodyFrame", "moving"):
          "        type patch;\n        faces ((0 1 5 4));\n    }\n"
          "    outlet\n    {\n        type patch;\n"
          "        faces ((3 7 6 2));")])
-    edit(case + "/0.orig/U", [
-        ("internalField   uniform (0 0 0);",
-         "internalField   uniform (0 %s 0);" % V),
-        ("    walls\n    {\n        type            noSlip;\n    }",
-         "    \"(walls|inlet)\"\n    {\n        type            fixedValue;\n"
-         "        value           uniform (0 %s 0);\n    }\n"
-         "    outlet\n    {\n        type            inletOutlet;\n"
-         "        inletValue      uniform (0 0 0);\n"
-         "        value           uniform (0 %s 0);\n    }" % (V, V))])
-    edit(case + "/0.orig/p", [
-        ("    walls\n    {\n        type            zeroGradient;\n    }",
-         "    \"(walls|inlet)\"\n    {\n        type            zeroGradient;\n"
-         "    }\n    outlet\n    {\n        type            fixedValue;\n"
-         "        value           uniform 0;\n    }")])
+    bodyFrameInflow(case, V)

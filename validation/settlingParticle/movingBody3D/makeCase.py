@@ -24,9 +24,12 @@ is free (its flow is steady): maxCo MAXCO (default 1), DT the first step.
 Usage: makeCase.py TUTORIAL CASE KIND R/h V DT ENDTIME PREDICTOR [MAXCO]
 """
 import os
-import re
 import shutil
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "bin"))
+from fbmCaseEdit import edit, bodyFrameInflow  # noqa: E402  (bin/fbmCaseEdit.py)
 
 W, L = 0.4, 1.2       # the box; d/W = 0.25
 YB = 0.4              # the body frame's sphere: 0.35 below it, 0.75 above
@@ -45,16 +48,6 @@ h = R/RH
 nxz, ny = round(W/h), round(L/h)
 if abs(nxz*h - W) > 1e-9 or abs(ny*h - L) > 1e-9:
     sys.exit("makeCase.py: the box is not a whole number of cells at R/h %g" % RH)
-
-
-def edit(path, pairs, regex=False):
-    s = open(path).read()
-    for a, b in pairs:
-        n = len(re.findall(a, s)) if regex else s.count(a)
-        if n == 0:
-            sys.exit("makeCase.py: '%s' not found in %s" % (a, path))
-        s = re.sub(a, b, s) if regex else s.replace(a, b)
-    open(path, 'w').write(s)
 
 
 shutil.rmtree(case, ignore_errors=True)
@@ -113,17 +106,4 @@ edit(case + "/system/blockMeshDict", [
      "        faces ((0 1 5 4));\n    }\n    outlet\n    {\n"
      "        type patch;\n        faces\n        (\n"
      "            (3 7 6 2)")])
-edit(case + "/0.orig/U", [
-    ("internalField   uniform (0 0 0);",
-     "internalField   uniform (0 %s 0);" % V),
-    ("    walls\n    {\n        type            noSlip;\n    }",
-     "    \"(walls|inlet)\"\n    {\n        type            fixedValue;\n"
-     "        value           uniform (0 %s 0);\n    }\n"
-     "    outlet\n    {\n        type            inletOutlet;\n"
-     "        inletValue      uniform (0 0 0);\n"
-     "        value           uniform (0 %s 0);\n    }" % (V, V))])
-edit(case + "/0.orig/p", [
-    ("    walls\n    {\n        type            zeroGradient;\n    }",
-     "    \"(walls|inlet)\"\n    {\n        type            zeroGradient;\n"
-     "    }\n    outlet\n    {\n        type            fixedValue;\n"
-     "        value           uniform 0;\n    }")])
+bodyFrameInflow(case, V)
