@@ -22,6 +22,10 @@ section 2). Reads every run in runs/ (made by ./Allrun):
     runs/fbmOuter3-L<N>         the same with three outer correctors, no
                                 extrapolatePredictor, no minIter (the
                                 settings of the fbmFoam* runs above)
+    runs/<method>CoOnly-L<N>    bodyFitted, fbmExplicit, fbmSemiImplicit
+                                with the step set by maxCo 0.5 alone
+                                (maxDeltaT 1 instead of 1e-3: ./Allrun
+                                -courantOnly)
 
 and writes
 
@@ -33,7 +37,7 @@ and writes
                   body-fitted run, the body-fitted CPU time at the same
                   error (along the body-fitted levels timed with them,
                   below) and the ratio of the two (the issue's goal: at
-                  most 2)
+                  most 2); the CoOnly rows against bodyFittedCoOnly
     timing.csv    the CPU times of runs made more than once: each run
                   <method>-L<N> (tag "first") and its repeats
                   runs/<method>-L<N>-<tag> (./Allrun -tag), which go only
@@ -245,9 +249,11 @@ columns = ["method", "level", "cells", "Re_max", "U_max", "t_Re_max",
            "gap_mesh_failed_d", "gap_speedup_d", "U_end", "commit"]
 
 order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
+         "bodyFittedCoOnly": 1.7,
          "fbmFoam": 2,
          "fbmFoamScaled": 3, "fbmFoamDamped": 4, "fbmOuter3": 5,
-         "fbmExplicit": 6, "fbmSemiImplicit": 7}
+         "fbmExplicit": 6, "fbmSemiImplicit": 7,
+         "fbmExplicitCoOnly": 8, "fbmSemiImplicitCoOnly": 9}
 
 runs = []
 repeats = []
@@ -328,11 +334,12 @@ goalColumns = ["method", "level", "Re_max", "err_pct", "cpu_to_2d_s",
                "bf_cpu_s", "bf_how", "ratio", "goal_met"]
 
 
-def bodyFittedLine():
+def bodyFittedLine(coOnly=False):
     """(level, Re_max, CPU to 2 d) of the body-fitted levels, the rerun's
-    CPU where there is one"""
+    CPU where there is one; coOnly: the bodyFittedCoOnly levels"""
     pts = {}
-    for method in ("bodyFitted", "bodyFittedRerun"):
+    for method in (("bodyFittedCoOnly",) if coOnly
+                   else ("bodyFitted", "bodyFittedRerun")):
         for r in rows:
             if r["method"] == method and r["Re_max"]:
                 pts[int(r["level"])] = (float(r["Re_max"]),
@@ -343,30 +350,41 @@ def bodyFittedLine():
 bfRows = sorted((int(r["level"]), float(r["Re_max"]), float(r["cpu_to_2d_s"]))
                 for r in rows if r["method"] == "bodyFitted" and r["Re_max"])
 goal = []
+
+
+def errorLine(coOnly=False):
+    """(error %, CPU to 2 d, level) of the body-fitted levels with an
+    error"""
+    return sorted((100*abs(re/reRef - 1), c, lvl)
+                  for lvl, re, c in bodyFittedLine(coOnly)
+                  if abs(re/reRef - 1) > 0)
+
+
 if bfRows:
     reRef = bfRows[-1][1]
-    bfPts = sorted((100*abs(re/reRef - 1), c, lvl)
-                   for lvl, re, c in bodyFittedLine()
-                   if abs(re/reRef - 1) > 0)
+    bfPts = errorLine()
+    bfPtsCo = errorLine(coOnly=True)
     for r in rows:
-        if r["method"] not in ("fbmOuter3", "fbmExplicit", "fbmSemiImplicit") \
+        if r["method"] not in ("fbmOuter3", "fbmExplicit", "fbmSemiImplicit",
+                               "fbmExplicitCoOnly", "fbmSemiImplicitCoOnly") \
                 or not r["Re_max"]:
             continue
+        pts = bfPtsCo if r["method"].endswith("CoOnly") else bfPts
         e = 100*abs(float(r["Re_max"])/reRef - 1)
         cpu = float(r["cpu_to_2d_s"])
         g = {"method": r["method"], "level": r["level"],
              "Re_max": r["Re_max"], "err_pct": "%.2f" % e,
              "cpu_to_2d_s": r["cpu_to_2d_s"]}
-        if len(bfPts) >= 2 and e > 0:
-            i = next((k for k in range(len(bfPts) - 1)
-                      if bfPts[k][0] <= e <= bfPts[k + 1][0]), None)
+        if len(pts) >= 2 and e > 0:
+            i = next((k for k in range(len(pts) - 1)
+                      if pts[k][0] <= e <= pts[k + 1][0]), None)
             if i is not None:
-                how = "interpolated L%d-L%d" % (bfPts[i][2], bfPts[i + 1][2])
+                how = "interpolated L%d-L%d" % (pts[i][2], pts[i + 1][2])
             else:
-                i = 0 if e < bfPts[0][0] else len(bfPts) - 2
+                i = 0 if e < pts[0][0] else len(pts) - 2
                 how = "extrapolated beyond L%d" % (
-                    bfPts[0][2] if e < bfPts[0][0] else bfPts[-1][2])
-            (e0, c0, _), (e1, c1, _) = bfPts[i], bfPts[i + 1]
+                    pts[0][2] if e < pts[0][0] else pts[-1][2])
+            (e0, c0, _), (e1, c1, _) = pts[i], pts[i + 1]
             slope = math.log(c1/c0)/math.log(e1/e0)
             bfCpu = c0*(e/e0)**slope
             g.update({"bf_cpu_s": "%.3g" % bfCpu, "bf_how": how,
@@ -409,10 +427,15 @@ label = {
     "fbmOuter3": "fbmFoam, 3 outer correctors",
     "fbmExplicit": "fbmFoam, tutorial (explicit, extrapolated)",
     "fbmSemiImplicit": "fbmFoam, semiImplicit",
+    "bodyFittedCoOnly": "body-fitted, step by maxCo alone",
+    "fbmExplicitCoOnly": "fbmFoam, tutorial, step by maxCo alone",
+    "fbmSemiImplicitCoOnly": "fbmFoam, semiImplicit, step by maxCo alone",
 }
 # The free-fall runs: one colour per method, the level in the line style
 methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
-                "fbmSemiImplicit": "tab:purple"}
+                "fbmSemiImplicit": "tab:purple",
+                "fbmExplicitCoOnly": "olive",
+                "fbmSemiImplicitCoOnly": "tab:pink"}
 levelStyle = {3: "--", 4: "-", 5: "-."}
 for m, c in methodColour.items():
     for lvl, ls in levelStyle.items():
@@ -471,7 +494,13 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
             ("fbmExplicit", "fbmFoam, tutorial: 1 corrector, extrapolated, "
              "explicit", "tab:green", "D"),
             ("fbmSemiImplicit", "fbmFoam, the same with coupling "
-             "semiImplicit", "tab:purple", "^")]
+             "semiImplicit", "tab:purple", "^"),
+            ("bodyFittedCoOnly", "body-fitted, step by maxCo 0.5 alone "
+             "(maxDeltaT 1)", "navy", "o"),
+            ("fbmExplicitCoOnly", "fbmFoam explicit, step by maxCo 0.5 "
+             "alone", "olive", "D"),
+            ("fbmSemiImplicitCoOnly", "fbmFoam semiImplicit, step by maxCo "
+             "0.5 alone", "tab:pink", "^")]
 floor = 0.02
 if bfRows:
     for method, lab, colour, marker in accuracy:
@@ -535,6 +564,11 @@ if bfRows:
             ax3.loglog([2*c1, 2*c1*(eMax/e1)**slope], [e1, eMax], ":",
                        color="tab:blue", lw=1, alpha=0.7,
                        label="the same, extrapolated")
+    if len(bfPtsCo) >= 2:
+        ax3.loglog([2*p[1] for p in bfPtsCo], [p[0] for p in bfPtsCo], "--",
+                   color="navy", lw=1, alpha=0.7,
+                   label="2 x body-fitted CPU, step by maxCo alone: the "
+                         "goal of the CoOnly rows")
     ax3.set_ylim(floor, 30)
 ax3.set_xlabel("CPU time from release to gap = 2 d [s]")
 ax3.set_ylabel("|Re_max / Re_max(body-fitted L%d) - 1| [%%]"
