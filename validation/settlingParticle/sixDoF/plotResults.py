@@ -26,6 +26,13 @@ section 2). Reads every run in runs/ (made by ./Allrun):
                                 with the step set by maxCo 0.5 alone
                                 (maxDeltaT 1 instead of 1e-3: ./Allrun
                                 -courantOnly)
+    runs/<method>Graded[CoOnly]-L<N>
+                                fbmExplicit, fbmSemiImplicit on the mesh
+                                graded across the channel to 2 h at the
+                                side walls (./Allrun -graded, gradeMesh.py)
+    runs/gradingSweep-<RATIO>   the tutorial at level 3, step by maxCo
+                                alone, graded to RATIO h at the side walls
+                                (./Allrun -gradingSweep): gradingSweep.csv
 
 and writes
 
@@ -253,7 +260,9 @@ order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmFoam": 2,
          "fbmFoamScaled": 3, "fbmFoamDamped": 4, "fbmOuter3": 5,
          "fbmExplicit": 6, "fbmSemiImplicit": 7,
-         "fbmExplicitCoOnly": 8, "fbmSemiImplicitCoOnly": 9}
+         "fbmExplicitCoOnly": 8, "fbmSemiImplicitCoOnly": 9,
+         "fbmExplicitGraded": 10, "fbmExplicitGradedCoOnly": 11,
+         "fbmSemiImplicitGraded": 12, "fbmSemiImplicitGradedCoOnly": 13}
 
 runs = []
 repeats = []
@@ -365,8 +374,8 @@ if bfRows:
     bfPts = errorLine()
     bfPtsCo = errorLine(coOnly=True)
     for r in rows:
-        if r["method"] not in ("fbmOuter3", "fbmExplicit", "fbmSemiImplicit",
-                               "fbmExplicitCoOnly", "fbmSemiImplicitCoOnly") \
+        if not r["method"].startswith(("fbmOuter3", "fbmExplicit",
+                                       "fbmSemiImplicit")) \
                 or not r["Re_max"]:
             continue
         pts = bfPtsCo if r["method"].endswith("CoOnly") else bfPts
@@ -397,6 +406,33 @@ if bfRows:
         for g in goal:
             w.writerow(g)
     print(open("goal.csv").read())
+
+# The grading sweep: Re_max against the side walls' cell size alone
+sweep = []
+for run in glob.glob("runs/gradingSweep-*"):
+    try:
+        ratio = float(run.split("gradingSweep-")[1])
+        data = readFbm(run)
+        row = summarise("gradingSweep", 3, run, data)
+    except (OSError, ValueError, IndexError) as err:
+        print(f"{run}: skipped ({err})", file=sys.stderr)
+        continue
+    mesh = open(os.path.join(run, "log.gradeMesh")).read().split(":")[1]
+    nx = sum(int(n) for n in mesh.split("cells")[0].split("+"))
+    sweep.append({"ratio": "%g" % ratio, "nx": nx, "cells": row["cells"],
+                  "Re_max": row.get("Re_max", ""),
+                  "err_pct": ("%.2f" % (100*(float(row["Re_max"])/reRef - 1))
+                              if row.get("Re_max") and bfRows else ""),
+                  "cpu_to_2d_s": row.get("cpu_to_2d_s", ""),
+                  "commit": row.get("commit", "")})
+if sweep:
+    sweep.sort(key=lambda r: float(r["ratio"]))
+    with open("gradingSweep.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(sweep[0]))
+        w.writeheader()
+        for r in sweep:
+            w.writerow(r)
+    print(open("gradingSweep.csv").read())
 
 # ---------------------------------------------------------------------------
 import matplotlib
@@ -430,12 +466,22 @@ label = {
     "bodyFittedCoOnly": "body-fitted, step by maxCo alone",
     "fbmExplicitCoOnly": "fbmFoam, tutorial, step by maxCo alone",
     "fbmSemiImplicitCoOnly": "fbmFoam, semiImplicit, step by maxCo alone",
+    "fbmExplicitGraded": "fbmFoam, tutorial, graded mesh",
+    "fbmExplicitGradedCoOnly": "fbmFoam, tutorial, graded mesh, step by "
+                               "maxCo alone",
+    "fbmSemiImplicitGraded": "fbmFoam, semiImplicit, graded mesh",
+    "fbmSemiImplicitGradedCoOnly": "fbmFoam, semiImplicit, graded mesh, "
+                                   "step by maxCo alone",
 }
 # The free-fall runs: one colour per method, the level in the line style
 methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
                 "fbmSemiImplicit": "tab:purple",
                 "fbmExplicitCoOnly": "olive",
-                "fbmSemiImplicitCoOnly": "tab:pink"}
+                "fbmSemiImplicitCoOnly": "tab:pink",
+                "fbmExplicitGraded": "tab:cyan",
+                "fbmExplicitGradedCoOnly": "darkcyan",
+                "fbmSemiImplicitGraded": "tab:brown",
+                "fbmSemiImplicitGradedCoOnly": "sienna"}
 levelStyle = {3: "--", 4: "-", 5: "-."}
 for m, c in methodColour.items():
     for lvl, ls in levelStyle.items():
@@ -500,7 +546,15 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
             ("fbmExplicitCoOnly", "fbmFoam explicit, step by maxCo 0.5 "
              "alone", "olive", "D"),
             ("fbmSemiImplicitCoOnly", "fbmFoam semiImplicit, step by maxCo "
-             "0.5 alone", "tab:pink", "^")]
+             "0.5 alone", "tab:pink", "^"),
+            ("fbmExplicitGraded", "fbmFoam explicit, graded mesh",
+             "tab:cyan", "D"),
+            ("fbmExplicitGradedCoOnly", "fbmFoam explicit, graded mesh, "
+             "step by maxCo alone", "darkcyan", "D"),
+            ("fbmSemiImplicitGraded", "fbmFoam semiImplicit, graded mesh",
+             "tab:brown", "^"),
+            ("fbmSemiImplicitGradedCoOnly", "fbmFoam semiImplicit, graded "
+             "mesh, step by maxCo alone", "sienna", "^")]
 floor = 0.02
 if bfRows:
     for method, lab, colour, marker in accuracy:
