@@ -220,8 +220,20 @@ void Foam::fbm::couplingModels::rigidProjection::projectionForces
         if (Tc && (*Tc)[bi] != vector::zero)
         {
             // The contact torque acts again in the sub-steps (zero, and
-            // left alone, for round bodies)
-            torque[bi] -= (*Tc)[bi];
+            // left alone, for round bodies). The flow solve gave the body
+            // the angular momentum I dw dt = Tc dt (dw = I^-1 Tc), which
+            // the balance above turned into a torque per axis: that is
+            // what is taken out (Tc itself in 2D, where the empty axis is
+            // decoupled; in 3D the same per-axis balance as the
+            // hydrodynamic torque's, so the contact torque cancels)
+            const vector Lc(I & contactAngularAcceleration(b, (*Tc)[bi]));
+            vector dwc(Zero);
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                const scalar Idd = I.component(diagCmpt[d]);
+                if (Idd > 0) dwc[d] = Lc[d]/Idd;
+            }
+            torque[bi] -= I & dwc;
         }
     }
 }
