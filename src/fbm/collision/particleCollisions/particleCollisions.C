@@ -332,6 +332,23 @@ void Foam::fbm::particleCollisions::contactForces
 }
 
 
+void Foam::fbm::particleCollisions::initMeanTorque
+(
+    const PtrList<body>& bodies
+)
+{
+    if (allRound_)
+    {
+        meanTorque_.setSize(bodies.size());
+        meanTorque_ = Zero;
+        return;
+    }
+    List<vector> F;
+    contactForces(bodies, F);
+    meanTorque_ = torque_;
+}
+
+
 void Foam::fbm::particleCollisions::shapePair
 (
     const PtrList<body>& bodies,
@@ -638,6 +655,7 @@ void Foam::fbm::particleCollisions::move
     if (keepMean)
     {
         meanForce_ = (0.5/n)*F;
+        meanTorque_ = (0.5/n)*T;
     }
     for (label step = 0; step < n; ++step)
     {
@@ -665,6 +683,13 @@ void Foam::fbm::particleCollisions::move
             forAll(F, i)
             {
                 meanForce_[i] += w*F[i];
+            }
+            if (!allRound_)
+            {
+                forAll(T, i)
+                {
+                    meanTorque_[i] += w*T[i];
+                }
             }
         }
 

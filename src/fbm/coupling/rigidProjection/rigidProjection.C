@@ -48,16 +48,54 @@ Foam::fbm::couplingModels::rigidProjection::projectedContactForces() const
 }
 
 
+const Foam::List<Foam::vector>*
+Foam::fbm::couplingModels::rigidProjection::projectedContactTorques() const
+{
+    if
+    (
+        projectedContactForces()
+     && projectedTorque_.size() == system_.bodies().size()
+    )
+    {
+        return &projectedTorque_;
+    }
+    return nullptr;
+}
+
+
+Foam::vector
+Foam::fbm::couplingModels::rigidProjection::contactAngularAcceleration
+(
+    const body& b,
+    const vector& Tc
+) const
+{
+    // dw = I^-1 Tc with the body's inertia in the world frame; in 2D the
+    // rotation about the empty direction only (as
+    // fbm::rigidBodyMotion::angularAcceleration)
+    vector dw(inv(b.inertia()) & Tc);
+    const vector& mask = system_.motion().planeMask();
+    if (cmptMin(mask) == 0)
+    {
+        dw = dw - cmptMultiply(mask, dw);
+    }
+    return dw;
+}
+
+
 void Foam::fbm::couplingModels::rigidProjection::relaxProjectedForce()
 {
     if (!projectedContactForces())
     {
         return;
     }
-    const List<vector>& Fc = system_.collisions().meanForce();
+    const particleCollisions& collisions = system_.collisions();
+    const List<vector>& Fc = collisions.meanForce();
+    const List<vector>& Tc = collisions.meanTorque();
     if (contactRelaxation_ == 1)
     {
         projectedForce_ = Fc;
+        projectedTorque_ = Tc;
     }
     else
     {
@@ -65,6 +103,15 @@ void Foam::fbm::couplingModels::rigidProjection::relaxProjectedForce()
         {
             projectedForce_[bi] +=
                 contactRelaxation_*(Fc[bi] - projectedForce_[bi]);
+        }
+        // Round bodies: Tc and p_T zero, left alone (no round-off)
+        forAll(projectedTorque_, bi)
+        {
+            if (Tc[bi] != vector::zero || projectedTorque_[bi] != vector::zero)
+            {
+                projectedTorque_[bi] +=
+                    contactRelaxation_*(Tc[bi] - projectedTorque_[bi]);
+            }
         }
     }
 }
@@ -132,6 +179,7 @@ void Foam::fbm::couplingModels::rigidProjection::projectionForces
     // is the body's rate of change of momentum less its submerged weight,
     // which the equations of motion add back.
     const List<vector>* Fc = projectedContactForces();
+    const List<vector>* Tc = projectedContactTorques();
     const scalar rhoFluid = system_.rhoFluid();
     const vector& g = system_.motion().g();
 
@@ -169,6 +217,24 @@ void Foam::fbm::couplingModels::rigidProjection::projectionForces
             wNew[d] = (Idd*b.omega()[d] + Lnew[d])/(Idd + Kdd);
         }
         torque[bi] = (I & (wNew - b.omega()))/dt;
+        if (Tc && (*Tc)[bi] != vector::zero)
+        {
+            // The contact torque acts again in the sub-steps (zero, and
+            // left alone, for round bodies). The flow solve gave the body
+            // the angular momentum I dw dt = Tc dt (dw = I^-1 Tc), which
+            // the balance above turned into a torque per axis: that is
+            // what is taken out (Tc itself in 2D, where the empty axis is
+            // decoupled; in 3D the same per-axis balance as the
+            // hydrodynamic torque's, so the contact torque cancels)
+            const vector Lc(I & contactAngularAcceleration(b, (*Tc)[bi]));
+            vector dwc(Zero);
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                const scalar Idd = I.component(diagCmpt[d]);
+                if (Idd > 0) dwc[d] = Lc[d]/Idd;
+            }
+            torque[bi] -= I & dwc;
+        }
     }
 }
 
@@ -281,11 +347,25 @@ void Foam::fbm::couplingModels::rigidProjection::start()
         projectedForce_ = restartForce_;
         Info<< "fbm: projectContacts: contact forces of the last step"
             << " read with the body state" << nl;
+        if (restartTorque_.size())
+        {
+            collisions.setMeanTorque(restartTorque_);
+            Info<< "fbm: projectContacts: contact torques of the last step"
+                << " read with the body state" << nl;
+        }
+        else
+        {
+            // An earlier state without contactTorque: the torques at the
+            // restart positions (zero for round bodies)
+            collisions.initMeanTorque(system_.bodies());
+        }
+        projectedTorque_ = collisions.meanTorque();
     }
     else
     {
         collisions.initMeanForce(system_.bodies());
         projectedForce_ = collisions.meanForce();
+        projectedTorque_ = collisions.meanTorque();
     }
 }
 
@@ -324,6 +404,33 @@ void Foam::fbm::couplingModels::rigidProjection::constrain
         }
     }
 
+    // projectContacts, non-round bodies: the contact torque of the last
+    // step as the force density of the rigid rotation it gives,
+    // alpha V (rho_s/rho_f) (dw x r), dw = I^-1 Tc (the header's
+    // derivation). Bodies without a contact torque (round ones) take no
+    // term at all, so that their solve is unchanged to the bit
+    const List<vector>* Tc = projectedContactTorques();
+    List<vector> dw;
+    boolList hasTorque;
+    if (Tc)
+    {
+        dw.setSize(bodies.size(), Zero);
+        hasTorque.setSize(bodies.size(), false);
+        forAll(bodies, bi)
+        {
+            if (!projected(bi) || (*Tc)[bi] == vector::zero) continue;
+            const body& b = bodies[bi];
+            dw[bi] =
+                (b.rho()/rhoFluid)*contactAngularAcceleration(b, (*Tc)[bi]);
+            hasTorque[bi] = true;
+        }
+        if (!hasTorque.found(true))
+        {
+            Tc = nullptr;
+        }
+    }
+    const vectorField& C = fb.mesh().C().primitiveField();
+
     for (const label celli : fb.activeCells())
     {
         const label bi = label(id[celli]);
@@ -336,6 +443,12 @@ void Foam::fbm::couplingModels::rigidProjection::constrain
         if (Fc)
         {
             source[celli] += alpha[celli]*V[celli]*(*Fc)[bi]/rhoVb[bi];
+        }
+        if (Tc && hasTorque[bi])
+        {
+            source[celli] +=
+                alpha[celli]*V[celli]
+               *(dw[bi] ^ (C[celli] - bodies[bi].centre()));
         }
     }
 }
@@ -404,6 +517,20 @@ void Foam::fbm::couplingModels::rigidProjection::readState
             restartForce_[bi] =
                 state.subDict(bodies[bi].name()).get<vector>("contactForce");
         }
+
+        // The contact torque beside it (a state written before it was
+        // projected has none: start() takes the torques at the restart
+        // positions)
+        if (stateHasEntry(state, "contactTorque"))
+        {
+            restartTorque_.setSize(bodies.size());
+            forAll(bodies, bi)
+            {
+                restartTorque_[bi] =
+                    state.subDict(bodies[bi].name())
+                   .get<vector>("contactTorque");
+            }
+        }
     }
 }
 
@@ -420,6 +547,11 @@ void Foam::fbm::couplingModels::rigidProjection::writeState
     if (Fc)
     {
         os.writeEntry("contactForce", (*Fc)[bi]);
+    }
+    const List<vector>* Tc = projectedContactTorques();
+    if (Tc)
+    {
+        os.writeEntry("contactTorque", (*Tc)[bi]);
     }
 }
 
