@@ -91,12 +91,8 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
           + addedMassCoeff_*(If & omegaDotLag)
         )
     );
-    if (cmptMin(planeMask_) == 0)
-    {
-        // 2D: rotation about the empty direction only
-        wDot = wDot - cmptMultiply(planeMask_, wDot);
-    }
-    return wDot;
+    // 2D: rotation about the empty direction only
+    return planeRotation(wDot);
 }
 
 

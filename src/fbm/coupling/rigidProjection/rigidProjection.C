@@ -73,13 +73,7 @@ Foam::fbm::couplingModels::rigidProjection::contactAngularAcceleration
     // dw = I^-1 Tc with the body's inertia in the world frame; in 2D the
     // rotation about the empty direction only (as
     // fbm::rigidBodyMotion::angularAcceleration)
-    vector dw(inv(b.inertia()) & Tc);
-    const vector& mask = system_.motion().planeMask();
-    if (cmptMin(mask) == 0)
-    {
-        dw = dw - cmptMultiply(mask, dw);
-    }
-    return dw;
+    return system_.motion().planeRotation(inv(b.inertia()) & Tc);
 }
 
 
