@@ -29,8 +29,12 @@ Description
       until the body turns over (the tennis-racket flip);
     - the contact model's sub-steps (kick, drift, kick) give the same
       motion as the plain step;
+    - principal moments and axes (fbm::principalAxes) of inertia tensors
+      with two and three equal moments, with and without off-diagonal
+      entries of round-off size;
     - a body frame that is not principal (the eigenvectors of the
-      inertia): the same motion as the principal one;
+      inertia): the same motion as the principal one, for three different
+      moments and for two equal ones;
     - a constant torque about a principal axis: w = T t/I.
 
 \*---------------------------------------------------------------------------*/
@@ -39,6 +43,8 @@ Description
 #include "body.H"
 #include "ellipsoid.H"
 #include "rigidBodyMotion.H"
+#include "principalAxes.H"
+#include "Tuple2.H"
 #include "fbmTest.H"
 
 using namespace Foam;
@@ -323,14 +329,65 @@ int main(int argc, char *argv[])
         );
     }
 
+    // ---- Principal axes where moments are equal (fbm::principalAxes) ----
+    {
+        // R diag(lambda) R^T with two and with three equal moments, and
+        // the inertia of a box 0.2 x 0.08 x 0.2 with off-diagonal entries
+        // of round-off size (as integrated from a triSurface): OpenFOAM's
+        // eigenValues reports complex roots there and returns zeros
+        const tensor R(rotation(vector(1, 2, -2)/3.0, 0.7));
+        const scalar m = 2*0.2*0.08*0.2;
+        const scalar Ia = m*(sqr(0.2) + sqr(0.08))/12;
+        const scalar Ib = m*(sqr(0.2) + sqr(0.2))/12;
+        const List<Tuple2<symmTensor, vector>> cases
+        ({
+            {symm(R & tensor(1, 0, 0, 0, 2, 0, 0, 0, 1) & R.T()), vector(1, 1, 2)},
+            {symm(R & tensor(3, 0, 0, 0, 3, 0, 0, 0, 3) & R.T()), vector(3, 3, 3)},
+            {symmTensor(Ia, 1e-19*Ia, -2e-20*Ia, Ib, 3e-20*Ia, Ia), vector(Ia, Ia, Ib)},
+            {symm(R & tensor(0.5, 0, 0, 0, 2, 0, 0, 0, 7) & R.T()), vector(0.5, 2, 7)}
+        });
+        Info<< nl << "Principal axes" << nl;
+        for (const auto& c : cases)
+        {
+            const fbm::principalAxes p(c.first());
+            const tensor& E = p.axes();
+            const scalar scale = mag(c.first());
+            fbmTest::check("principal values", p.values(), c.second(), 1e-14*scale);
+            fbmTest::check
+            (
+                "E diag(lambda) E^T = I",
+                mag
+                (
+                    (E & tensor(p.values().x(), 0, 0, 0, p.values().y(), 0, 0, 0, p.values().z()) & E.T())
+                  - tensor(c.first())
+                )/scale,
+                0, 1e-14
+            );
+            fbmTest::check("E^T E = 1", mag((E.T() & E) - tensor::I), 0, 1e-14);
+            fbmTest::check("det E = +1", det(E), 1, 1e-14);
+        }
+    }
+
     // ---- A body frame that is not principal (eigenvectors of I0) ----
+    // for a body with three different moments and one with two equal ones.
+    // With two equal moments any pair of axes in their plane is principal,
+    // and the rotation splitting about another pair has another O(dt^2)
+    // error: there the two motions agree to the splitting error, not to
+    // round-off (measured 3.9e-6 in omega, 2.6e-5 in Q; at half the step
+    // 9.7e-7 and 6.6e-6, 4.0 times less: second order)
+    for
+    (
+        const vector& e
+      : List<vector>({vector(0.2, 0.15, 0.1), vector(0.2, 0.2, 0.1)})
+    )
     {
         // The same body twice: an ellipsoid turned by R at the start, and
         // one whose body-frame inertia is the turned one (its principal
         // axes found by the eigen-decomposition); the motions agree
         const fbm::rigidBodyMotion motion(Zero, 1, 0, mesh);
         const tensor R(rotation(vector(2, -1, 1)/Foam::sqrt(6.0), 0.9));
-        const vector e(0.2, 0.15, 0.1), w0(1, 2, 3);
+        const vector w0(1, 2, 3);
+        const scalar tol = (e.x() == e.y() ? 1e-4 : 1e-10);
         autoPtr<fbm::body> ap(newTop(e, w0, mesh));
         {
             fbm::bodyState s(ap->state());
@@ -360,16 +417,16 @@ int main(int argc, char *argv[])
             motion.move(ap(), 2e-3);
             motion.move(b, 2e-3);
         }
-        Info<< nl << "Non-principal body frame, 1000 steps" << nl;
+        Info<< nl << "Non-principal body frame, semi-axes " << e << ", 1000 steps" << nl;
         fbmTest::check
         (
             "tilted: the same angular velocity",
-            mag(ap->omega() - b.omega())/mag(w0), 0, 1e-10
+            mag(ap->omega() - b.omega())/mag(w0), 0, tol
         );
         fbmTest::check
         (
             "tilted: the same orientation (Q_a = Q_b R)",
-            mag(ap->state().Q() - (b.state().Q() & R)), 0, 1e-10
+            mag(ap->state().Q() - (b.state().Q() & R)), 0, tol
         );
     }
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidBodyMotion.H"
+#include "principalAxes.H"
 #include "body.H"
 #include "polyMesh.H"
 
@@ -159,14 +160,9 @@ void Foam::fbm::rigidBodyMotion::freeRotation(body& b, const scalar dt) const
     tensor E(tensor::I);
     if (I0.xy() != 0 || I0.xz() != 0 || I0.yz() != 0)
     {
-        lambda = eigenValues(I0);
-        E = eigenVectors(I0, lambda).T();
-        if (det(E) < 0)
-        {
-            E.xz() = -E.xz();
-            E.yz() = -E.yz();
-            E.zz() = -E.zz();
-        }
+        const principalAxes axes(I0);
+        lambda = axes.values();
+        E = axes.axes();
     }
 
     // Principal frame to lab, and the angular momentum in the principal

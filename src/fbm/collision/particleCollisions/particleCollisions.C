@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleCollisions.H"
+#include "principalAxes.H"
 #include "body.H"
 #include "rigidBodyMotion.H"
 #include "fvMesh.H"
@@ -69,7 +70,7 @@ Foam::scalar Foam::fbm::particleCollisions::contactMass(const body& b) const
     }
     else
     {
-        Imin = cmptMin(eigenValues(I0));
+        Imin = principalAxes(I0).values().x();
     }
     const scalar R = b.shape().radius();
     return 1/((m < GREAT ? 1/m : 0) + sqr(R)/max(Imin, VSMALL));
