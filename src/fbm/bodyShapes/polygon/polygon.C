@@ -326,4 +326,27 @@ Foam::vector Foam::fbm::bodyShapes::polygon::planeContact
 }
 
 
+
+void Foam::fbm::bodyShapes::polygon::supportBand
+(
+    const tensor& Q,
+    const vector& d,
+    const scalar band,
+    DynamicList<vector>& pts,
+    DynamicList<scalar>& weights
+) const
+{
+    const vector db(Q.T() & inPlane(d));
+    const vector2D d2(db[axes_[0]], db[axes_[1]]);
+    DynamicList<vector2D> sel;
+    bandPoints(vertices_, d2, band, sel, weights);
+    for (const vector2D& v : sel)
+    {
+        vector pb(Zero);
+        pb[axes_[0]] = v.x();
+        pb[axes_[1]] = v.y();
+        pts.append(Q & pb);
+    }
+}
+
 // ************************************************************************* //

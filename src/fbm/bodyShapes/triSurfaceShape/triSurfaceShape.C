@@ -223,4 +223,22 @@ Foam::vector Foam::fbm::bodyShapes::triSurfaceShape::planeContact
 }
 
 
+
+void Foam::fbm::bodyShapes::triSurfaceShape::supportBand
+(
+    const tensor& Q,
+    const vector& d,
+    const scalar band,
+    DynamicList<vector>& pts,
+    DynamicList<scalar>& weights
+) const
+{
+    DynamicList<vector> sel;
+    bandPoints(surf_->localPoints(), vector(Q.T() & d), band, sel, weights);
+    for (const vector& p : sel)
+    {
+        pts.append(Q & p);
+    }
+}
+
 // ************************************************************************* //

@@ -377,9 +377,32 @@ void Foam::fbm::particleCollisions::shapePair
         return;
     }
 
-    // Along the normal n (from i to j) at the contact point
+    // Along the normal n (from i to j) at the contact point: the middle of
+    // the closest points, or where a body has flat faces the middle of the
+    // overlap of the faces that meet (a face lying on a face touches at
+    // the middle of the overlap, not at one corner)
     const vector& n = c.normal;
-    const point pc(0.5*(c.pA + c.pB));
+    point pc(0.5*(c.pA + c.pB));
+    if (bi.shape().hasFlatFaces() || bj.shape().hasFlatFaces())
+    {
+        const scalar band = 0.5*law.range();
+        DynamicList<point> pi, pj;
+        DynamicList<scalar> wi, wj;
+        bi.shape().supportBand(bi.state().Q(), n, band, pi, wi);
+        bj.shape().supportBand(bj.state().Q(), -n, band, pj, wj);
+        for (point& p : pi)
+        {
+            p += X_[i];
+        }
+        for (point& p : pj)
+        {
+            p += X_[j];
+        }
+        pc = contactPatch(n, vector::one - planeMask_).centre
+        (
+            pc, pi, wi, pj, wj, R_[i] + R_[j]
+        );
+    }
     const vector ri(cmptMultiply(planeMask_, pc - X_[i]));
     const vector rj(cmptMultiply(planeMask_, pc - X_[j]));
     vector Fi(-law.pairForceAtGap(c.gap, R_[i], R_[j])*n);
