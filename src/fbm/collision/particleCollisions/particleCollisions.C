@@ -99,6 +99,43 @@ Foam::scalar Foam::fbm::particleCollisions::inverseMass
 }
 
 
+Foam::vector Foam::fbm::particleCollisions::frictionForce
+(
+    const body& bi,
+    const label i,
+    const vector& ri,
+    const body* bj,
+    const label j,
+    const vector& rj,
+    const vector& n,
+    const scalar Fn
+) const
+{
+    vector v(U_[i] + (bi.omega() ^ ri));
+    if (bj)
+    {
+        v -= U_[j] + (bj->omega() ^ rj);
+    }
+    const vector vt(cmptMultiply(planeMask_, v - (v & n)*n));
+    const scalar magVt = mag(vt);
+    if (Fn <= 0 || magVt < VSMALL)
+    {
+        return Zero;
+    }
+    const vector t(vt/magVt);
+    const scalar w =
+        inverseMass(bi, i, ri, t) + (bj ? inverseMass(*bj, j, rj, t) : 0);
+    if (w <= 0)
+    {
+        return Zero;
+    }
+
+    // Coulomb's bound, or the force that stops the sliding over tau (per
+    // unit depth in 2D, as the law's)
+    return -min(frictionCoeff_*Fn, magVt/(w*frictionTau_*depth_))*t;
+}
+
+
 Foam::scalar Foam::fbm::particleCollisions::meshSize(const fvMesh& mesh)
 {
     const scalar Vmax = gMax(mesh.V().field());
@@ -167,12 +204,22 @@ Foam::fbm::particleCollisions::particleCollisions
             "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
+    frictionCoeff_
+    (
+        dict.getCheckOrDefault<scalar>
+        (
+            "frictionCoeff", 0, [](scalar mu){ return mu >= 0; }
+        )
+    ),
     walls_(mesh),
     search_(),
     planeMask_(planeMask(mesh)),
     narrow_(vector::one - planeMask_),
     round_(bodies.size(), true),
     allRound_(true),
+    subRotates_(bodies.size(), false),
+    anyTorque_(false),
+    frictionTau_(GREAT),
     torque_(bodies.size(), Zero),
     mass_(bodies.size(), GREAT),
     dtSubMax_(GREAT),
@@ -190,7 +237,9 @@ Foam::fbm::particleCollisions::particleCollisions
     {
         round_[i] = bodies[i].shape().isotropic();
         allRound_ = allRound_ && round_[i];
+        subRotates_[i] = !round_[i] || frictionCoeff_ > 0;
     }
+    anyTorque_ = !allRound_ || frictionCoeff_ > 0;
     if (!allRound_)
     {
         Info<< "fbm: collisions: non-round bodies: closest points by"
@@ -293,6 +342,13 @@ Foam::fbm::particleCollisions::particleCollisions
             Info<< "fbm: collisions: normal damping ratio " << dampingRatio_
                 << nl;
         }
+        if (frictionCoeff_ > 0)
+        {
+            Info<< "fbm: collisions: Coulomb friction, frictionCoeff "
+                << frictionCoeff_ << " (history-free: sticking creeps at"
+                << " about the held acceleration times 2 dt_s)" << nl;
+        }
+        frictionTau_ = 2*dtSubMax_;
 
         Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kPmax
             << " wall " << kWmax << ", smallest mass " << mMin
@@ -338,7 +394,7 @@ void Foam::fbm::particleCollisions::initMeanTorque
     const PtrList<body>& bodies
 )
 {
-    if (allRound_)
+    if (!anyTorque_)
     {
         meanTorque_.setSize(bodies.size());
         meanTorque_ = Zero;
@@ -421,6 +477,11 @@ void Foam::fbm::particleCollisions::shapePair
         }
     }
 
+    if (frictionCoeff_ > 0)
+    {
+        Fi += frictionForce(bi, i, ri, &bj, j, rj, n, max(-(Fi & n), 0.0));
+    }
+
     F[i] += Fi;
     F[j] -= Fi;
     T[i] += ri ^ Fi;
@@ -479,6 +540,19 @@ void Foam::fbm::particleCollisions::shapeWall
 
     F[i] += Fi;
     T[i] += r ^ Fi;
+
+    // Friction at the body's own contact point (the wall is fixed: no
+    // counterpart to share the point with)
+    if (frictionCoeff_ > 0)
+    {
+        const vector rs(r - cmptMultiply(planeMask_, 0.5*gap*nw));
+        const vector Ft
+        (
+            frictionForce(b, i, rs, nullptr, -1, Zero, nw, max(-(Fi & nw), 0.0))
+        );
+        F[i] += Ft;
+        T[i] += rs ^ Ft;
+    }
 }
 
 
@@ -514,6 +588,7 @@ void Foam::fbm::particleCollisions::arrayForces
             const vector Fij(law.pairForce(X_[i], R_[i], X_[j], R_[j]));
             F[i] += Fij;
             F[j] -= Fij;
+            vector Fn(Fij);
             minPairGap_ = min
             (
                 minPairGap_, mag(X_[i] - X_[j]) - R_[i] - R_[j]
@@ -536,6 +611,30 @@ void Foam::fbm::particleCollisions::arrayForces
                 );
                 F[i] += Fd;
                 F[j] -= Fd;
+                Fn += Fd;
+            }
+
+            if (frictionCoeff_ > 0)
+            {
+                // At the middle of the gap on the line of centres, the
+                // normal force that of the law and the dashpot above
+                const vector d(X_[j] - X_[i]);
+                const scalar D = max(mag(d), VSMALL);
+                const vector n(d/D);
+                const vector ri((R_[i] + 0.5*(D - R_[i] - R_[j]))*n);
+                const vector rj(ri + X_[i] - X_[j]);
+                const vector Ft
+                (
+                    frictionForce
+                    (
+                        bodies[i], i, ri, &bodies[j], j, rj, n,
+                        max(-(Fn & n), 0.0)
+                    )
+                );
+                F[i] += Ft;
+                F[j] -= Ft;
+                T[i] += ri ^ Ft;
+                T[j] -= rj ^ Ft;
             }
         }
     }
@@ -569,15 +668,36 @@ void Foam::fbm::particleCollisions::arrayForces
                 }
                 minWallGap_ = min(minWallGap_, d - R);
                 const point Xw(walls_.image(w, X));
+                vector Fd(Zero);
                 if (dampingRatio_ > 0)
                 {
                     const vector n((X - Xw)/max(mag(X - Xw), VSMALL));
                     const scalar k = depth_*law.wallStiffness(R);
-                    F[i] -=
-                        (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
+                    Fd =
+                      - (2*dampingRatio_*Foam::sqrt(k*mass_[i])/depth_)
                        *(U_[i] & n)*n;
+                    F[i] += Fd;
                 }
-                F[i] += law.wallForce(X, R, Xw);
+                const vector Fw(law.wallForce(X, R, Xw));
+                F[i] += Fw;
+                if (frictionCoeff_ > 0)
+                {
+                    // At the body's surface point nearest the wall (the
+                    // wall is fixed: no counterpart to share the point
+                    // with)
+                    const vector& nw = walls_.normals()[w];
+                    const vector r(R*nw);
+                    const vector Ft
+                    (
+                        frictionForce
+                        (
+                            bodies[i], i, r, nullptr, -1, Zero, nw,
+                            max(-((Fw + Fd) & nw), 0.0)
+                        )
+                    );
+                    F[i] += Ft;
+                    T[i] += r ^ Ft;
+                }
             }
         }
     }
@@ -586,12 +706,12 @@ void Foam::fbm::particleCollisions::arrayForces
     {
         F[i] = translates_[i] ? depth_*F[i] : vector::zero;
     }
-    if (!allRound_)
+    if (anyTorque_)
     {
         forAll(T, i)
         {
             T[i] =
-                (!round_[i] && bodies[i].rotates())
+                (subRotates_[i] && bodies[i].rotates())
               ? depth_*T[i] : vector::zero;
         }
     }
@@ -616,6 +736,7 @@ void Foam::fbm::particleCollisions::move
             << " maxSubCycles" << exit(FatalIOError);
     }
     const scalar dtSub = dt/n;
+    frictionTau_ = 2*dtSub;
     minPairGap_ = GREAT;
     minWallGap_ = GREAT;
 
@@ -661,10 +782,10 @@ void Foam::fbm::particleCollisions::move
     // torque
     auto kickRotation = [&](const List<vector>& T)
     {
-        if (allRound_) return;
+        if (!anyTorque_) return;
         forAll(bodies, i)
         {
-            if (!round_[i] && moves[i])
+            if (subRotates_[i] && moves[i])
             {
                 motion.angularSubKick(bodies[i], h, T[i]);
             }
@@ -689,11 +810,11 @@ void Foam::fbm::particleCollisions::move
         {
             if (moves[i]) X_[i] += dtSub*U_[i];
         }
-        if (!allRound_)
+        if (anyTorque_)
         {
             forAll(bodies, i)
             {
-                if (!round_[i] && moves[i])
+                if (subRotates_[i] && moves[i])
                 {
                     motion.rotationDrift(bodies[i], dtSub);
                 }
@@ -708,7 +829,7 @@ void Foam::fbm::particleCollisions::move
             {
                 meanForce_[i] += w*F[i];
             }
-            if (!allRound_)
+            if (anyTorque_)
             {
                 forAll(T, i)
                 {
@@ -729,7 +850,7 @@ void Foam::fbm::particleCollisions::move
         // the others ran in them)
         motion.endTranslationSubCycles
         (
-            b, X_[i], U_[i], round_[i] ? n : 0, dtSub
+            b, X_[i], U_[i], subRotates_[i] ? 0 : n, dtSub
         );
         motion.endSubCycles(b, dt);
     }
