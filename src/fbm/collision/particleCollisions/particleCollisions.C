@@ -527,19 +527,53 @@ void Foam::fbm::particleCollisions::shapeWall
     );
     vector Fi(-law.wallForceAtGap(gap, R_[i])*nw);
 
+    // The dashpot shared among a flat face's points with the weights of
+    // its contact point: the same force as at the middle, and a torque
+    // against the face's rocking, which the middle alone (hardly moving
+    // along nw as the face rocks) would not damp
+    vector Fd(Zero);
+    vector Td(Zero);
     if (dampingRatio_ > 0)
     {
         const scalar wi = inverseMass(b, i, r, nw);
         if (wi > 0)
         {
             const scalar k = depth_*law.wallStiffness(R_[i]);
-            const vector v(U_[i] + (b.omega() ^ r));
-            Fi -= (2*dampingRatio_*Foam::sqrt(k/wi)/depth_)*(v & nw)*nw;
+            const scalar c = 2*dampingRatio_*Foam::sqrt(k/wi)/depth_;
+            if (b.shape().hasFlatFaces())
+            {
+                DynamicList<vector> pts;
+                DynamicList<scalar> wts;
+                b.shape().supportBand
+                (
+                    b.state().Q(), nw, 0.5*law.range(), pts, wts
+                );
+                const scalar sumW = sum(wts);
+                forAll(pts, k)
+                {
+                    const vector rk
+                    (
+                        cmptMultiply(planeMask_, pts[k] + 0.5*gap*nw)
+                    );
+                    const vector v(U_[i] + (b.omega() ^ rk));
+                    const vector Fk(-(wts[k]/sumW)*c*(v & nw)*nw);
+                    Fd += Fk;
+                    Td += rk ^ Fk;
+                }
+            }
+            else
+            {
+                const vector v(U_[i] + (b.omega() ^ r));
+                Fi -= c*(v & nw)*nw;
+            }
         }
     }
 
     F[i] += Fi;
     T[i] += r ^ Fi;
+    F[i] += Fd;
+    T[i] += Td;
+    Fi += Fd;
 
     // Friction at the body's own contact point (the wall is fixed: no
     // counterpart to share the point with)
