@@ -32,7 +32,11 @@ Description
       the start, the spins changed by the friction (they are not without
       it);
     - frictionCoeff 0 leaves a round pair's motion as it was (no torque,
-      no spin change).
+      no spin change);
+    - on a 3D mesh instead: a sphere rolling (a = 5/7 g sin(theta)) and
+      slipping (d(omega)/dt = -5/2 mu g cos(theta)/R), an ellipsoid lying
+      on the incline (rotation off) sliding and held, two spinning spheres
+      colliding obliquely.
 
 \*---------------------------------------------------------------------------*/
 
@@ -94,6 +98,26 @@ dictionary circleDict(const scalar R)
     dictionary d;
     d.add("type", "circle");
     d.add("radius", R);
+    return d;
+}
+
+
+dictionary sphereDict(const scalar R)
+{
+    dictionary d;
+    d.add("type", "sphere");
+    d.add("radius", R);
+    return d;
+}
+
+
+dictionary ellipsoidDict(const vector& e)
+{
+    dictionary d;
+    d.add("type", "ellipsoid");
+    d.add("a", e.x());
+    d.add("b", e.y());
+    d.add("c", e.z());
     return d;
 }
 
@@ -337,6 +361,50 @@ int main(int argc, char *argv[])
         }
         Info<< "Written " << csvFile << nl;
         return 0;
+    }
+
+    if (mesh.nSolutionD() == 3)
+    {
+        // ---- 3D: a sphere and an ellipsoid on the incline ----
+        Info<< nl << "Sphere R 0.1 on the incline, theta 20 degrees" << nl;
+        const dictionary sphere(sphereDict(0.1));
+        const inclineResult roll(incline(sphere, 0.1, 0.5, mesh));
+        const inclineResult slip(incline(sphere, 0.1, 0.05, mesh));
+        fbmTest::check("mu 0.5: rolls, a = 5/7 g sin(theta)", roll.a/(5.0/7*gMag*s), 1, 1e-2);
+        fbmTest::check
+        (
+            "mu 0.5: without slipping, |U + omega R| / U",
+            mag(roll.Uend + roll.omegaEnd*roll.R)/roll.Uend, 0, 1e-2
+        );
+        fbmTest::check
+        (
+            "mu 0.05: slips, a = g (sin - mu cos)",
+            slip.a/(gMag*(s - 0.05*c)), 1, 1e-3
+        );
+        fbmTest::check
+        (
+            "mu 0.05: d(omega)/dt = -5/2 mu g cos/R",
+            slip.alpha/(-2.5*0.05*gMag*c/0.1), 1, 1e-3
+        );
+
+        Info<< nl << "Ellipsoid (0.15 0.06 0.1) lying on the incline" << nl;
+        const dictionary ell(ellipsoidDict(vector(0.15, 0.06, 0.1)));
+        const inclineResult slide(incline(ell, 0.06, 0.2, mesh, false));
+        const inclineResult held(incline(ell, 0.06, 0.5, mesh, false));
+        fbmTest::check
+        (
+            "ellipsoid, mu 0.2: a = g (sin - mu cos)",
+            slide.a/(gMag*(s - 0.2*c)), 1, 1e-3
+        );
+        fbmTest::check
+        (
+            "ellipsoid, mu 0.5: creep speed / (g sin(theta) 2 dt_s)",
+            held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
+        );
+
+        Info<< nl << "Oblique collision, no gravity" << nl;
+        oblique("spheres", sphereDict(0.1), 0.3, true, mesh);
+        return fbmTest::result();
     }
 
     // ---- A block on the incline ----
