@@ -116,23 +116,16 @@ Foam::vector Foam::fbm::particleCollisions::frictionForce
     {
         v -= U_[j] + (bj->omega() ^ rj);
     }
-    const vector vt(cmptMultiply(planeMask_, v - (v & n)*n));
-    const scalar magVt = mag(vt);
-    if (Fn <= 0 || magVt < VSMALL)
-    {
-        return Zero;
-    }
-    const vector t(vt/magVt);
-    const scalar w =
-        inverseMass(bi, i, ri, t) + (bj ? inverseMass(*bj, j, rj, t) : 0);
-    if (w <= 0)
-    {
-        return Zero;
-    }
-
-    // Coulomb's bound, or the force that stops the sliding over tau (per
-    // unit depth in 2D, as the law's)
-    return -min(frictionCoeff_*Fn, magVt/(w*frictionTau_*depth_))*t;
+    return friction_.force
+    (
+        v, n, Fn,
+        [&](const vector& t)
+        {
+            return
+                inverseMass(bi, i, ri, t)
+              + (bj ? inverseMass(*bj, j, rj, t) : 0);
+        }
+    );
 }
 
 
@@ -204,13 +197,7 @@ Foam::fbm::particleCollisions::particleCollisions
             "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
-    frictionCoeff_
-    (
-        dict.getCheckOrDefault<scalar>
-        (
-            "frictionCoeff", 0, [](scalar mu){ return mu >= 0; }
-        )
-    ),
+    friction_(dict, planeMask(mesh), depth_),
     walls_(mesh),
     search_(),
     planeMask_(planeMask(mesh)),
@@ -219,7 +206,6 @@ Foam::fbm::particleCollisions::particleCollisions
     allRound_(true),
     subRotates_(bodies.size(), false),
     anyTorque_(false),
-    frictionTau_(GREAT),
     torque_(bodies.size(), Zero),
     mass_(bodies.size(), GREAT),
     dtSubMax_(GREAT),
@@ -237,9 +223,9 @@ Foam::fbm::particleCollisions::particleCollisions
     {
         round_[i] = bodies[i].shape().isotropic();
         allRound_ = allRound_ && round_[i];
-        subRotates_[i] = !round_[i] || frictionCoeff_ > 0;
+        subRotates_[i] = !round_[i] || friction_.active();
     }
-    anyTorque_ = !allRound_ || frictionCoeff_ > 0;
+    anyTorque_ = !allRound_ || friction_.active();
     if (!allRound_)
     {
         Info<< "fbm: collisions: non-round bodies: closest points by"
@@ -342,13 +328,8 @@ Foam::fbm::particleCollisions::particleCollisions
             Info<< "fbm: collisions: normal damping ratio " << dampingRatio_
                 << nl;
         }
-        if (frictionCoeff_ > 0)
-        {
-            Info<< "fbm: collisions: Coulomb friction, frictionCoeff "
-                << frictionCoeff_ << " (history-free: sticking creeps at"
-                << " about the held acceleration times 2 dt_s)" << nl;
-        }
-        frictionTau_ = 2*dtSubMax_;
+        friction_.writeInfo();
+        friction_.setSubStep(dtSubMax_);
 
         Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kPmax
             << " wall " << kWmax << ", smallest mass " << mMin
@@ -477,7 +458,7 @@ void Foam::fbm::particleCollisions::shapePair
         }
     }
 
-    if (frictionCoeff_ > 0)
+    if (friction_.active())
     {
         Fi += frictionForce(bi, i, ri, &bj, j, rj, n, max(-(Fi & n), 0.0));
     }
@@ -577,7 +558,7 @@ void Foam::fbm::particleCollisions::shapeWall
 
     // Friction at the body's own contact point (the wall is fixed: no
     // counterpart to share the point with)
-    if (frictionCoeff_ > 0)
+    if (friction_.active())
     {
         const vector rs(r - cmptMultiply(planeMask_, 0.5*gap*nw));
         const vector Ft
@@ -648,7 +629,7 @@ void Foam::fbm::particleCollisions::arrayForces
                 Fn += Fd;
             }
 
-            if (frictionCoeff_ > 0)
+            if (friction_.active())
             {
                 // At the middle of the gap on the line of centres, the
                 // normal force that of the law and the dashpot above
@@ -714,7 +695,7 @@ void Foam::fbm::particleCollisions::arrayForces
                 }
                 const vector Fw(law.wallForce(X, R, Xw));
                 F[i] += Fw;
-                if (frictionCoeff_ > 0)
+                if (friction_.active())
                 {
                     // At the body's surface point nearest the wall (the
                     // wall is fixed: no counterpart to share the point
@@ -770,7 +751,7 @@ void Foam::fbm::particleCollisions::move
             << " maxSubCycles" << exit(FatalIOError);
     }
     const scalar dtSub = dt/n;
-    frictionTau_ = 2*dtSub;
+    friction_.setSubStep(dtSub);
     minPairGap_ = GREAT;
     minWallGap_ = GREAT;
 
