@@ -306,6 +306,43 @@ void oblique
 }
 
 
+// A round body (I = k m R^2) of radius 0.1 on the incline: with mu 0.5 it
+// rolls without slipping, a = g sin(theta)/(1 + k); with mu 0.05 it slips,
+// a = g (sin - mu cos) and d(omega)/dt = -mu g cos(theta)/(k R)
+void rollAndSlip
+(
+    const dictionary& shapeDict,
+    const scalar k,
+    const fvMesh& mesh
+)
+{
+    const scalar s = Foam::sin(theta), c = Foam::cos(theta);
+    const inclineResult roll(incline(shapeDict, 0.1, 0.5, mesh));
+    const inclineResult slip(incline(shapeDict, 0.1, 0.05, mesh));
+    const word kName(Foam::name(k));
+    fbmTest::check
+    (
+        "mu 0.5: rolls, a = g sin(theta)/(1 + k), k " + kName,
+        roll.a/(gMag*s/(1 + k)), 1, 1e-2
+    );
+    fbmTest::check
+    (
+        "mu 0.5: without slipping, |U + omega R| / U",
+        mag(roll.Uend + roll.omegaEnd*roll.R)/roll.Uend, 0, 1e-2
+    );
+    fbmTest::check
+    (
+        "mu 0.05: slips, a = g (sin - mu cos)",
+        slip.a/(gMag*(s - 0.05*c)), 1, 1e-3
+    );
+    fbmTest::check
+    (
+        "mu 0.05: d(omega)/dt = -mu g cos/(k R), k " + kName,
+        slip.alpha/(-0.05*gMag*c/(k*0.1)), 1, 1e-3
+    );
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addOption
@@ -367,25 +404,7 @@ int main(int argc, char *argv[])
     {
         // ---- 3D: a sphere and an ellipsoid on the incline ----
         Info<< nl << "Sphere R 0.1 on the incline, theta 20 degrees" << nl;
-        const dictionary sphere(sphereDict(0.1));
-        const inclineResult roll(incline(sphere, 0.1, 0.5, mesh));
-        const inclineResult slip(incline(sphere, 0.1, 0.05, mesh));
-        fbmTest::check("mu 0.5: rolls, a = 5/7 g sin(theta)", roll.a/(5.0/7*gMag*s), 1, 1e-2);
-        fbmTest::check
-        (
-            "mu 0.5: without slipping, |U + omega R| / U",
-            mag(roll.Uend + roll.omegaEnd*roll.R)/roll.Uend, 0, 1e-2
-        );
-        fbmTest::check
-        (
-            "mu 0.05: slips, a = g (sin - mu cos)",
-            slip.a/(gMag*(s - 0.05*c)), 1, 1e-3
-        );
-        fbmTest::check
-        (
-            "mu 0.05: d(omega)/dt = -5/2 mu g cos/R",
-            slip.alpha/(-2.5*0.05*gMag*c/0.1), 1, 1e-3
-        );
+        rollAndSlip(sphereDict(0.1), 0.4, mesh);
 
         Info<< nl << "Ellipsoid (0.15 0.06 0.1) lying on the incline" << nl;
         const dictionary ell(ellipsoidDict(vector(0.15, 0.06, 0.1)));
@@ -448,25 +467,7 @@ int main(int argc, char *argv[])
     // ---- A disk on the incline ----
     {
         Info<< nl << "Disk R 0.1 on the incline, theta 20 degrees" << nl;
-        const dictionary disk(circleDict(0.1));
-        const inclineResult roll(incline(disk, 0.1, 0.5, mesh));
-        const inclineResult slip(incline(disk, 0.1, 0.05, mesh));
-        fbmTest::check("mu 0.5: rolls, a = 2/3 g sin(theta)", roll.a/(2.0/3*gMag*s), 1, 1e-2);
-        fbmTest::check
-        (
-            "mu 0.5: without slipping, |U + omega R| / U",
-            mag(roll.Uend + roll.omegaEnd*roll.R)/roll.Uend, 0, 1e-2
-        );
-        fbmTest::check
-        (
-            "mu 0.05: slips, a = g (sin - mu cos)",
-            slip.a/(gMag*(s - 0.05*c)), 1, 1e-3
-        );
-        fbmTest::check
-        (
-            "mu 0.05: d(omega)/dt = -2 mu g cos/R",
-            slip.alpha/(-2*0.05*gMag*c/0.1), 1, 1e-3
-        );
+        rollAndSlip(circleDict(0.1), 0.5, mesh);
     }
 
     // ---- Oblique collisions without gravity ----

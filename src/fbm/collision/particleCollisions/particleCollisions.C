@@ -423,21 +423,23 @@ void Foam::fbm::particleCollisions::shapePair
     if (bi.shape().hasFlatFaces() || bj.shape().hasFlatFaces())
     {
         const scalar band = 0.5*law.range();
-        DynamicList<point> pi, pj;
-        DynamicList<scalar> wi, wj;
-        bi.shape().supportBand(bi.state().Q(), n, band, pi, wi);
-        bj.shape().supportBand(bj.state().Q(), -n, band, pj, wj);
-        for (point& p : pi)
+        faceA_.clear();
+        faceB_.clear();
+        weightA_.clear();
+        weightB_.clear();
+        bi.shape().supportBand(bi.state().Q(), n, band, faceA_, weightA_);
+        bj.shape().supportBand(bj.state().Q(), -n, band, faceB_, weightB_);
+        for (point& p : faceA_)
         {
             p += X_[i];
         }
-        for (point& p : pj)
+        for (point& p : faceB_)
         {
             p += X_[j];
         }
         pc = contactPatch(n, vector::one - planeMask_).centre
         (
-            pc, pi, wi, pj, wj, R_[i] + R_[j]
+            pc, faceA_, weightA_, faceB_, weightB_, R_[i] + R_[j]
         );
     }
     const vector ri(cmptMultiply(planeMask_, pc - X_[i]));
@@ -523,8 +525,10 @@ void Foam::fbm::particleCollisions::shapeWall
             const scalar c = 2*dampingRatio_*Foam::sqrt(k/wi)/depth_;
             if (b.shape().hasFlatFaces())
             {
-                DynamicList<vector> pts;
-                DynamicList<scalar> wts;
+                DynamicList<vector>& pts = faceA_;
+                DynamicList<scalar>& wts = weightA_;
+                pts.clear();
+                wts.clear();
                 b.shape().supportBand
                 (
                     b.state().Q(), nw, 0.5*law.range(), pts, wts
