@@ -233,90 +233,23 @@ Foam::fbm::particleCollisions::particleCollisions
     }
 
     // Stiffest contact: each pair of (radius, mass) classes with its
-    // reduced mass, each class against a wall. A body that does not
-    // translate has an infinite mass. With more than maxClasses classes
-    // (a wide size distribution), the bound of the largest radius against
-    // the smallest mass.
-    const label maxClasses = 64;
-    DynamicList<scalar> classR;
-    DynamicList<scalar> classM;
-    bool anyMoving = false;
-    bool tooMany = false;
-    scalar Rmax = 0;
-    scalar mMin = GREAT;
-    for (const body& b : bodies)
+    // reduced mass, each class against a wall (fbm::contactTime)
+    scalarList radii(bodies.size());
+    scalarList masses(bodies.size());
+    boolList moves(bodies.size());
+    forAll(bodies, i)
     {
-        const scalar R = b.shape().radius();
-        const scalar m = contactMass(b);
-        Rmax = max(Rmax, R);
-        if (b.translates() || (m < GREAT))
-        {
-            anyMoving = true;
-            mMin = min(mMin, m);
-        }
-        if (tooMany) continue;
-
-        bool found = false;
-        forAll(classR, c)
-        {
-            if (classR[c] == R && classM[c] == m)
-            {
-                found = true;
-                break;
-            }
-        }
-        if (!found)
-        {
-            classR.append(R);
-            classM.append(m);
-            tooMany = (classR.size() > maxClasses);
-        }
+        radii[i] = bodies[i].shape().radius();
+        masses[i] = contactMass(bodies[i]);
+        moves[i] = bodies[i].translates();
     }
+    const contactTime stiffest(*model_, depth_, radii, masses, moves);
 
-    if (anyMoving)
+    if (stiffest.anyMoving())
     {
-        scalar kPmax = 0;
-        scalar kWmax = 0;
-        scalar omega2 = 0;
-        if (tooMany)
+        if (stiffest.valid())
         {
-            kPmax = depth_*model_->pairStiffness(Rmax, Rmax);
-            kWmax = depth_*model_->wallStiffness(Rmax);
-            omega2 = max(kPmax/(0.5*mMin), kWmax/mMin);
-        }
-        else
-        {
-            forAll(classR, a)
-            {
-                const scalar ma = classM[a];
-                if (ma < GREAT)
-                {
-                    const scalar kW = depth_*model_->wallStiffness(classR[a]);
-                    kWmax = max(kWmax, kW);
-                    omega2 = max(omega2, kW/ma);
-                }
-                for (label b = a; b < classR.size(); ++b)
-                {
-                    const scalar mb = classM[b];
-                    if (ma == GREAT && mb == GREAT) continue;
-
-                    const scalar mRed =
-                        (ma == mb) ? 0.5*ma
-                      : (ma == GREAT) ? mb
-                      : (mb == GREAT) ? ma
-                      : ma*mb/(ma + mb);
-                    const scalar kP =
-                        depth_*model_->pairStiffness(classR[a], classR[b]);
-                    kPmax = max(kPmax, kP);
-                    omega2 = max(omega2, kP/mRed);
-                }
-            }
-        }
-
-        if (omega2 > 0)
-        {
-            const scalar tc = constant::mathematical::pi/Foam::sqrt(omega2);
-            dtSubMax_ = tc/nStepsPerContact_;
+            dtSubMax_ = stiffest.tc()/nStepsPerContact_;
         }
 
         forAll(bodies, i)
@@ -331,10 +264,10 @@ Foam::fbm::particleCollisions::particleCollisions
         friction_.writeInfo();
         friction_.setSubStep(dtSubMax_);
 
-        Info<< "fbm: collisions: h " << h_ << ", stiffness pair " << kPmax
-            << " wall " << kWmax << ", smallest mass " << mMin
-            << " (" << (tooMany ? label(0) : classR.size())
-            << " radius/mass classes)"
+        Info<< "fbm: collisions: h " << h_ << ", stiffness pair "
+            << stiffest.kPmax() << " wall " << stiffest.kWmax()
+            << ", smallest mass " << stiffest.mMin()
+            << " (" << stiffest.nClasses() << " radius/mass classes)"
             << ": contact time " << nStepsPerContact_*dtSubMax_
             << ", largest sub-step " << dtSubMax_
             << " (nStepsPerContact " << nStepsPerContact_
