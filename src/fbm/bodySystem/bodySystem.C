@@ -102,13 +102,30 @@ void Foam::fbm::bodySystem::checkCoveredVolumes() const
                 << " cells)" << nl;
         }
 
-        if (err > tol)
+        // Beyond the tolerance of a smooth body: the sampling error of a
+        // thin one, or a cut. Its surface points tell them apart
+        point outside(Zero);
+        if (err > tol && fb_.surfaceInside(b, outside))
+        {
+            Info<< "    " << b.name() << ": covered volume " << vol[bi]
+                << " against " << Vb << " for the shape, " << err
+                << " relative (tolerance " << tol << " for a smooth body of"
+                << " radius " << b.shape().radius() << "): the sampling"
+                << " error of a body thin against the cells; its surface"
+                << " points lie in the mesh" << nl;
+        }
+        else if (err > tol)
         {
             OSstream& msg = FatalIOErrorInFunction(*this);
             msg << "Body " << b.name() << " (centre " << b.centre()
                 << ") is not wholly inside the mesh: covered volume "
                 << vol[bi] << " against " << Vb << " for the shape"
                 << " (tolerance " << tol << " relative)";
+            if (b.shape().hasSupport())
+            {
+                msg << "; its surface point " << outside
+                    << " lies in no cell";
+            }
             if (!stateFile_.empty())
             {
                 msg << nl << "    The centre is that of the restart state "

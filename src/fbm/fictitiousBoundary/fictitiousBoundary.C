@@ -17,6 +17,8 @@ License
 #include "HashSet.H"
 #include "Random.H"
 #include "syncTools.H"
+#include "unitConversion.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -307,6 +309,78 @@ Foam::scalar Foam::fbm::fictitiousBoundary::volumeTolerance
 {
     const scalar delta = hMax/pow(2.0, scalar(nSubdivision_));
     return max(1e-3, sqr(delta/b.shape().radius()));
+}
+
+
+bool Foam::fbm::fictitiousBoundary::surfaceInside
+(
+    const body& b,
+    point& outside
+) const
+{
+    const bodyShape& shape = b.shape();
+    if (!shape.hasSupport())
+    {
+        return true;
+    }
+
+    // The directions: in 2D every degree in the solution plane (e1, e2);
+    // in 3D the six axes and a Fibonacci spiral of 400 over the sphere
+    const Vector<label>& sd = mesh_.solutionD();
+    DynamicList<vector> dirs;
+    if (mesh_.nSolutionD() == 2)
+    {
+        vector e[2] = {Zero, Zero};
+        label k = 0;
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (sd[d] > 0) e[k++][d] = 1;
+        }
+        for (label i = 0; i < 360; ++i)
+        {
+            const scalar phi = degToRad(scalar(i));
+            dirs.append(cos(phi)*e[0] + sin(phi)*e[1]);
+        }
+    }
+    else
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            vector e(Zero);
+            e[d] = 1;
+            dirs.append(e);
+            dirs.append(-e);
+        }
+        const label n = 400;
+        const scalar golden = constant::mathematical::pi*(3 - sqrt(5.0));
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar z = 1 - (2*i + 1)/scalar(n);
+            const scalar rho = sqrt(max(scalar(0), 1 - z*z));
+            dirs.append(vector(rho*cos(golden*i), rho*sin(golden*i), z));
+        }
+    }
+
+    const point& X = b.centre();
+    pointField pts(dirs.size());
+    boolList found(dirs.size(), false);
+    forAll(dirs, i)
+    {
+        pts[i] = X + (1 - 1e-6)*shape.support(shape.orientation(), dirs[i]);
+        found[i] = mesh_.findCell(pts[i]) >= 0;
+    }
+    Pstream::listCombineGather(found, orEqOp<bool>());
+    Pstream::listCombineScatter(found);
+
+    forAll(found, i)
+    {
+        if (!found[i])
+        {
+            outside = pts[i];
+            return false;
+        }
+    }
+    return true;
 }
 
 
