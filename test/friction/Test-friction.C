@@ -57,6 +57,11 @@ const scalar gMag = 10;
 const scalar theta = 20*constant::mathematical::pi/180;
 
 
+// The friction model (frictionModel) of every run of this test: the
+// default (velocityRegularised) or that of -model
+word frictionModelType;
+
+
 dictionary collisionsDict(const scalar mu, const scalar damping)
 {
     dictionary coeffs;
@@ -72,6 +77,14 @@ dictionary collisionsDict(const scalar mu, const scalar damping)
     dict.add("singhRepulsionCoeffs", coeffs);
     dict.add("dampingRatio", damping);
     dict.add("frictionCoeff", mu);
+    if (mu > 0 && !frictionModelType.empty())
+    {
+        dict.add("frictionModel", frictionModelType);
+        dictionary spring;
+        spring.add("stiffnessRatio", 2.0/7);
+        spring.add("dampingRatio", 0.5);
+        dict.add("tangentialSpringCoeffs", spring);
+    }
     return dict;
 }
 
@@ -162,6 +175,7 @@ struct inclineResult
     scalar R;
     scalar maxTilt;
     scalar dtSub;
+    scalar slip;
 };
 
 
@@ -171,7 +185,8 @@ inclineResult incline
     const scalar halfHeight,
     const scalar mu,
     const fvMesh& mesh,
-    const bool rotates = true
+    const bool rotates = true,
+    const label nSteps = 250
 )
 {
     const boundBox& bb = mesh.bounds();
@@ -191,8 +206,17 @@ inclineResult incline
     }
     const fbm::body& b = bodies[0];
     const scalar x0 = b.centre().x();
+    // The body's front lower point (of a box: its front lower corner while
+    // it tilts by less than atan(0.2)), whose motion along the incline is
+    // the sliding at the contact, its pitching taken out
+    const vector front(0.2, -1, 0);
+    auto frontX = [&]()
+    {
+        return b.centre().x() + b.shape().support(b.state().Q(), front).x();
+    };
+    const scalar f0 = frontX();
     scalar U1 = 0, w1 = 0, maxTilt = 0;
-    for (label step = 1; step <= 250; ++step)
+    for (label step = 1; step <= nSteps; ++step)
     {
         coll.move(bodies, slope, dt);
         maxTilt = max(maxTilt, mag(b.state().Q().yx()));
@@ -203,8 +227,9 @@ inclineResult incline
         }
     }
     inclineResult r;
-    r.a = (b.U().x() - U1)/0.4;
-    r.alpha = (b.omega().z() - w1)/0.4;
+    r.a = (b.U().x() - U1)/(dt*(nSteps - 50));
+    r.alpha = (b.omega().z() - w1)/(dt*(nSteps - 50));
+    r.slip = frontX() - f0;
     r.distance = b.centre().x() - x0;
     r.Uend = b.U().x();
     r.omegaEnd = b.omega().z();
@@ -214,7 +239,7 @@ inclineResult incline
     Info<< "    mu " << mu << ": a " << r.a << ", d(omega)/dt " << r.alpha
         << ", distance in 0.5 s " << r.distance << ", U " << r.Uend
         << ", omega " << r.omegaEnd << ", largest tilt " << maxTilt
-        << ", wall gap " << coll.minWallGap()
+        << ", wall gap " << coll.minWallGap() << ", slip " << r.slip
         << nl;
     return r;
 }
@@ -349,13 +374,29 @@ int main(int argc, char *argv[])
     (
         "csv", "file",
         "instead of the checks, the incline for a range of mu (block, block"
-        " not turning, disk) into a CSV file (validation/friction)"
+        " not turning, disk) into a CSV file (validation/friction; with"
+        " -model, that model's)"
+    );
+    argList::addOption
+    (
+        "model", "name",
+        "the friction model (frictionModel; default velocityRegularised):"
+        " tangentialSpring checks that a held body holds"
     );
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
 
     const scalar s = Foam::sin(theta), c = Foam::cos(theta);
+    frictionModelType = args.getOrDefault<word>("model", word::null);
+    const bool spring = (frictionModelType == "tangentialSpring");
+    if (!frictionModelType.empty() && !spring)
+    {
+        FatalErrorInFunction
+            << "-model " << frictionModelType << ": this test knows"
+            << " tangentialSpring (and the default without -model)"
+            << exit(FatalError);
+    }
 
     fileName csvFile;
     if (args.readIfPresent("csv", csvFile))
@@ -363,7 +404,7 @@ int main(int argc, char *argv[])
         OFstream os(csvFile);
         os.precision(8);
         os  << "body,mu,a,a_exact,distance,U_end,omega_end,slip,"
-            << "largest_tilt,dt_sub" << nl;
+            << "largest_tilt,dt_sub,corner_slip" << nl;
         const List<scalar> mus
         ({
             0, 0.05, 0.1, 0.1213, 0.15, 0.2, 0.25, 0.3, 0.35, 0.364, 0.4,
@@ -393,7 +434,7 @@ int main(int argc, char *argv[])
                     << (isDisk ? aDisk : aSlide) << ',' << q.distance << ','
                     << q.Uend << ',' << q.omegaEnd << ','
                     << (isDisk ? (q.Uend + q.omegaEnd*q.R)/q.Uend : 0) << ','
-                    << q.maxTilt << ',' << q.dtSub << nl;
+                    << q.maxTilt << ',' << q.dtSub << ',' << q.slip << nl;
             }
         }
         Info<< "Written " << csvFile << nl;
@@ -415,11 +456,29 @@ int main(int argc, char *argv[])
             "ellipsoid, mu 0.2: a = g (sin - mu cos)",
             slide.a/(gMag*(s - 0.2*c)), 1, 1e-3
         );
-        fbmTest::check
-        (
-            "ellipsoid, mu 0.5: creep speed / (g sin(theta) 2 dt_s)",
-            held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
-        );
+        if (spring)
+        {
+            // The spring holds it: at rest, displaced by the spring's
+            // stretch only (m g sin(theta)/k_t, below 1e-4 here)
+            fbmTest::check
+            (
+                "ellipsoid, mu 0.5, spring: at rest (|U| / g sin(theta) 1 s)",
+                mag(held.Uend)/(gMag*s), 0, 1e-6
+            );
+            fbmTest::check
+            (
+                "ellipsoid, mu 0.5, spring: slid below 1e-4",
+                mag(held.slip), 0, 1e-4
+            );
+        }
+        else
+        {
+            fbmTest::check
+            (
+                "ellipsoid, mu 0.5: creep speed / (g sin(theta) 2 dt_s)",
+                held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
+            );
+        }
 
         Info<< nl << "Oblique collision, no gravity" << nl;
         oblique("spheres", sphereDict(0.1), 0.3, true, mesh);
@@ -453,15 +512,41 @@ int main(int argc, char *argv[])
             "mu 0.5: holds (path / frictionless path)",
             hold.distance/free.distance, 0, 1e-2
         );
-        // Held without turning: the creep speed of the sticking branch,
-        // g sin(theta) tau with tau = 2 dt_s (the turning block above,
-        // with its smaller sub-step, 1.8e-3 against 1.5e-3)
         const inclineResult held(incline(box, 0.05, 0.5, mesh, false));
-        fbmTest::check
-        (
-            "mu 0.5, not turning: creep speed / (g sin(theta) 2 dt_s)",
-            held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
-        );
+        if (spring)
+        {
+            // The spring holds it: at rest, its front corner slid by the
+            // spring's stretch only (m g sin(theta)/k_t, 2.5e-5 here).
+            // Turning, it first pitches forward onto that corner (tilt
+            // 0.016, the centre moving 8e-4 along the incline with it),
+            // slowly: at rest from about t = 4 (|U| 2.8e-7 at t = 5)
+            const inclineResult turning(incline(box, 0.05, 0.5, mesh, true, 2500));
+            for (const inclineResult* r : {&turning, &held})
+            {
+                const word what(r == &held ? "not turning, " : "turning, 5 s, ");
+                fbmTest::check
+                (
+                    "mu 0.5, spring, " + what + "at rest (|U| / g sin(theta) 1 s)",
+                    mag(r->Uend)/(gMag*s), 0, 1e-6
+                );
+                fbmTest::check
+                (
+                    "mu 0.5, spring, " + what + "corner slid below 1e-4",
+                    mag(r->slip), 0, 1e-4
+                );
+            }
+        }
+        else
+        {
+            // Held without turning: the creep speed of the sticking
+            // branch, g sin(theta) tau with tau = 2 dt_s (the turning block
+            // above, with its smaller sub-step, 1.8e-3 against 1.5e-3)
+            fbmTest::check
+            (
+                "mu 0.5, not turning: creep speed / (g sin(theta) 2 dt_s)",
+                held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
+            );
+        }
     }
 
     // ---- A disk on the incline ----

@@ -569,6 +569,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
         (
             new particleCollisions(subDict("collisions"), mesh, bodies_)
         );
+        readCollisionState();
     }
 
     coupling_->start();

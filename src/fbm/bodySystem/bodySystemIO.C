@@ -166,6 +166,20 @@ void Foam::fbm::bodySystem::readState()
 }
 
 
+void Foam::fbm::bodySystem::readCollisionState()
+{
+    if (stateFile_.empty() || !collisions_.valid())
+    {
+        return;
+    }
+    // The file readState() read and checked
+    IFstream is(stateFile_);
+    dictionary state(is, true);
+    state.name() = stateFile_;
+    collisions_->readState(state);
+}
+
+
 void Foam::fbm::bodySystem::writeState() const
 {
     const Time& runTime = mesh_.time();
@@ -192,6 +206,10 @@ void Foam::fbm::bodySystem::writeState() const
         os.beginBlock(bodies_[bi].name());
         bodies_[bi].state().write(os);
         coupling_->writeState(bi, os);
+        if (collisions_.valid())
+        {
+            collisions_->writeState(bi, os);
+        }
         os.endBlock();
     }
     IOobject::writeEndDivider(os);

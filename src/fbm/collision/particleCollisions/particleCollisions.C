@@ -108,17 +108,18 @@ Foam::vector Foam::fbm::particleCollisions::frictionForce
     const label j,
     const vector& rj,
     const vector& n,
-    const scalar Fn
-) const
+    const scalar Fn,
+    const scalar kn
+)
 {
     vector v(U_[i] + (bi.omega() ^ ri));
     if (bj)
     {
         v -= U_[j] + (bj->omega() ^ rj);
     }
-    return friction_.force
+    return friction_->force
     (
-        v, n, Fn,
+        labelPair(i, j), v, n, Fn, kn,
         [&](const vector& t)
         {
             return
@@ -197,7 +198,8 @@ Foam::fbm::particleCollisions::particleCollisions
             "dampingRatio", 0, [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
-    friction_(dict, planeMask(mesh), depth_),
+    friction_(frictionModel::New(dict, planeMask(mesh), depth_)),
+    bodyNames_(bodies.size()),
     walls_(mesh),
     search_(),
     planeMask_(planeMask(mesh)),
@@ -223,9 +225,10 @@ Foam::fbm::particleCollisions::particleCollisions
     {
         round_[i] = bodies[i].shape().isotropic();
         allRound_ = allRound_ && round_[i];
-        subRotates_[i] = !round_[i] || friction_.active();
+        subRotates_[i] = !round_[i] || friction_.valid();
+        bodyNames_[i] = bodies[i].name();
     }
-    anyTorque_ = !allRound_ || friction_.active();
+    anyTorque_ = !allRound_ || friction_.valid();
     if (!allRound_)
     {
         Info<< "fbm: collisions: non-round bodies: closest points by"
@@ -261,8 +264,11 @@ Foam::fbm::particleCollisions::particleCollisions
             Info<< "fbm: collisions: normal damping ratio " << dampingRatio_
                 << nl;
         }
-        friction_.writeInfo();
-        friction_.setSubStep(dtSubMax_);
+        if (friction_.valid())
+        {
+            friction_->writeInfo();
+            friction_->setSubStep(dtSubMax_);
+        }
 
         Info<< "fbm: collisions: h " << h_ << ", stiffness pair "
             << stiffest.kPmax() << " wall " << stiffest.kWmax()
@@ -299,7 +305,7 @@ void Foam::fbm::particleCollisions::contactForces
         U_[i] = b.U();
         translates_[i] = b.translates();
     }
-    arrayForces(bodies, F, torque_);
+    arrayForces(bodies, F, torque_, 0);
 }
 
 
@@ -393,9 +399,13 @@ void Foam::fbm::particleCollisions::shapePair
         }
     }
 
-    if (friction_.active())
+    if (friction_.valid())
     {
-        Fi += frictionForce(bi, i, ri, &bj, j, rj, n, max(-(Fi & n), 0.0));
+        Fi += frictionForce
+        (
+            bi, i, ri, &bj, j, rj, n, max(-(Fi & n), 0.0),
+            law.pairStiffness(R_[i], R_[j])
+        );
     }
 
     F[i] += Fi;
@@ -495,12 +505,16 @@ void Foam::fbm::particleCollisions::shapeWall
 
     // Friction at the body's own contact point (the wall is fixed: no
     // counterpart to share the point with)
-    if (friction_.active())
+    if (friction_.valid())
     {
         const vector rs(r - cmptMultiply(planeMask_, 0.5*gap*nw));
         const vector Ft
         (
-            frictionForce(b, i, rs, nullptr, -1, Zero, nw, max(-(Fi & nw), 0.0))
+            frictionForce
+            (
+                b, i, rs, nullptr, -1 - w, Zero, nw, max(-(Fi & nw), 0.0),
+                law.wallStiffness(R_[i])
+            )
         );
         F[i] += Ft;
         T[i] += rs ^ Ft;
@@ -512,11 +526,16 @@ void Foam::fbm::particleCollisions::arrayForces
 (
     const PtrList<body>& bodies,
     List<vector>& F,
-    List<vector>& T
+    List<vector>& T,
+    const scalar dtHistory
 )
 {
     const contactModel& law = *model_;
     const scalar range = law.range();
+    if (friction_.valid())
+    {
+        friction_->beginForces(dtHistory);
+    }
 
     F.setSize(bodies.size());
     F = Zero;
@@ -566,7 +585,7 @@ void Foam::fbm::particleCollisions::arrayForces
                 Fn += Fd;
             }
 
-            if (friction_.active())
+            if (friction_.valid())
             {
                 // At the middle of the gap on the line of centres, the
                 // normal force that of the law and the dashpot above
@@ -580,7 +599,7 @@ void Foam::fbm::particleCollisions::arrayForces
                     frictionForce
                     (
                         bodies[i], i, ri, &bodies[j], j, rj, n,
-                        max(-(Fn & n), 0.0)
+                        max(-(Fn & n), 0.0), law.pairStiffness(R_[i], R_[j])
                     )
                 );
                 F[i] += Ft;
@@ -632,7 +651,7 @@ void Foam::fbm::particleCollisions::arrayForces
                 }
                 const vector Fw(law.wallForce(X, R, Xw));
                 F[i] += Fw;
-                if (friction_.active())
+                if (friction_.valid())
                 {
                     // At the body's surface point nearest the wall (the
                     // wall is fixed: no counterpart to share the point
@@ -643,8 +662,8 @@ void Foam::fbm::particleCollisions::arrayForces
                     (
                         frictionForce
                         (
-                            bodies[i], i, r, nullptr, -1, Zero, nw,
-                            max(-((Fw + Fd) & nw), 0.0)
+                            bodies[i], i, r, nullptr, -1 - w, Zero, nw,
+                            max(-((Fw + Fd) & nw), 0.0), law.wallStiffness(R)
                         )
                     );
                     F[i] += Ft;
@@ -652,6 +671,11 @@ void Foam::fbm::particleCollisions::arrayForces
                 }
             }
         }
+    }
+
+    if (friction_.valid())
+    {
+        friction_->endForces();
     }
 
     forAll(F, i)
@@ -688,7 +712,10 @@ void Foam::fbm::particleCollisions::move
             << " maxSubCycles" << exit(FatalIOError);
     }
     const scalar dtSub = dt/n;
-    friction_.setSubStep(dtSub);
+    if (friction_.valid())
+    {
+        friction_->setSubStep(dtSub);
+    }
     minPairGap_ = GREAT;
     minWallGap_ = GREAT;
 
@@ -746,7 +773,7 @@ void Foam::fbm::particleCollisions::move
 
     List<vector> F(bodies.size(), Zero);
     List<vector>& T = torque_;
-    arrayForces(bodies, F, T);
+    arrayForces(bodies, F, T, 0);
     // The mean force is kept only once initMeanForce() asked for it
     const bool keepMean = (meanForce_.size() == bodies.size());
     if (keepMean)
@@ -773,7 +800,7 @@ void Foam::fbm::particleCollisions::move
             }
         }
 
-        arrayForces(bodies, F, T);
+        arrayForces(bodies, F, T, dtSub);
         if (keepMean)
         {
             const scalar w = (step < n - 1 ? 1.0 : 0.5)/n;
@@ -805,6 +832,28 @@ void Foam::fbm::particleCollisions::move
             b, X_[i], U_[i], subRotates_[i] ? 0 : n, dtSub
         );
         motion.endSubCycles(b, dt);
+    }
+}
+
+
+void Foam::fbm::particleCollisions::readState(const dictionary& state)
+{
+    if (friction_.valid())
+    {
+        friction_->readState(state, bodyNames_, walls_.names());
+    }
+}
+
+
+void Foam::fbm::particleCollisions::writeState
+(
+    const label bi,
+    Ostream& os
+) const
+{
+    if (friction_.valid())
+    {
+        friction_->writeState(bi, bodyNames_, walls_.names(), os);
     }
 }
 

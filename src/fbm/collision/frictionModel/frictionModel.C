@@ -10,11 +10,23 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "coulombFriction.H"
+#include "frictionModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+    defineTypeNameAndDebug(frictionModel, 0);
+    defineRunTimeSelectionTable(frictionModel, dictionary);
+}
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fbm::coulombFriction::coulombFriction
+Foam::fbm::frictionModel::frictionModel
 (
     const dictionary& dict,
     const vector& planeMask,
@@ -23,28 +35,11 @@ Foam::fbm::coulombFriction::coulombFriction
 :
     mu_
     (
-        dict.getCheckOrDefault<scalar>
-        (
-            "frictionCoeff", 0, [](scalar mu){ return mu >= 0; }
-        )
+        dict.getCheck<scalar>("frictionCoeff", [](scalar mu){ return mu > 0; })
     ),
     planeMask_(planeMask),
-    depth_(depth),
-    tau_(GREAT)
+    depth_(depth)
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::fbm::coulombFriction::writeInfo() const
-{
-    if (active())
-    {
-        Info<< "fbm: collisions: Coulomb friction, frictionCoeff " << mu_
-            << " (history-free: sticking creeps at about the held"
-            << " acceleration times 2 dt_s)" << nl;
-    }
-}
 
 
 // ************************************************************************* //

@@ -1,0 +1,310 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "tangentialSpring.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fbm
+{
+namespace frictionModels
+{
+    defineTypeNameAndDebug(tangentialSpring, 0);
+    addToRunTimeSelectionTable(frictionModel, tangentialSpring, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::frictionModels::tangentialSpring::tangentialSpring
+(
+    const dictionary& dict,
+    const vector& planeMask,
+    const scalar depth
+)
+:
+    frictionModel(dict, planeMask, depth),
+    stiffnessRatio_
+    (
+        dict.subDict(typeName + "Coeffs").getCheck<scalar>
+        (
+            "stiffnessRatio", [](scalar r){ return r > 0 && r <= 1; }
+        )
+    ),
+    dampingRatio_
+    (
+        dict.subDict(typeName + "Coeffs").getCheck<scalar>
+        (
+            "dampingRatio", [](scalar z){ return z >= 0 && z <= 1; }
+        )
+    ),
+    springs_(),
+    next_(),
+    dt_(0),
+    nEvaluations_(0),
+    byBody_(),
+    byBodyEvaluation_(-1)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::frictionModels::tangentialSpring::beginForces
+(
+    const scalar dt
+)
+{
+    dt_ = dt;
+    next_.clear();
+}
+
+
+void Foam::fbm::frictionModels::tangentialSpring::endForces()
+{
+    springs_.transfer(next_);
+    ++nEvaluations_;
+}
+
+
+Foam::vector Foam::fbm::frictionModels::tangentialSpring::force
+(
+    const labelPair& contact,
+    const vector& v,
+    const vector& n,
+    const scalar Fn,
+    const scalar kn,
+    const inverseMassFunction& inverseMass
+)
+{
+    if (Fn <= 0 || kn <= 0)
+    {
+        return Zero;
+    }
+
+    // The spring of the last evaluation turned into the present tangent
+    // plane (keeping its length), stretched by the sliding since
+    const vector vt(tangential(v, n));
+    vector xi(Zero);
+    const auto last = springs_.cfind(contact);
+    if (last.found())
+    {
+        const vector& xi0 = *last;
+        xi = tangential(xi0, n);
+        const scalar magXi = mag(xi);
+        if (magXi > VSMALL)
+        {
+            xi *= mag(xi0)/magXi;
+        }
+    }
+    xi += dt_*vt;
+
+    // The dashpot along the sliding velocity (as the normal one: the
+    // absolute stiffness is depth k)
+    const scalar kt = stiffnessRatio_*kn;
+    scalar c = 0;
+    const scalar magVt = mag(vt);
+    if (dampingRatio_ > 0 && magVt > VSMALL)
+    {
+        const scalar w = inverseMass(vt/magVt);
+        if (w > 0)
+        {
+            c = 2*dampingRatio_*Foam::sqrt(kt*depth_/w)/depth_;
+        }
+    }
+
+    vector Ft(-kt*xi - c*vt);
+
+    // Beyond Coulomb's bound the contact slides: the force at the bound,
+    // the spring what gives it
+    const scalar bound = mu_*Fn;
+    const scalar magFt = mag(Ft);
+    if (magFt > bound)
+    {
+        Ft *= bound/magFt;
+        xi = -(Ft + c*vt)/kt;
+    }
+
+    next_.set(contact, xi);
+    return Ft;
+}
+
+
+void Foam::fbm::frictionModels::tangentialSpring::writeInfo() const
+{
+    Info<< "fbm: collisions: Coulomb friction, frictionCoeff " << mu_
+        << " (tangentialSpring: stiffnessRatio " << stiffnessRatio_
+        << ", dampingRatio " << dampingRatio_ << "; the springs are part"
+        << " of the restart state)" << nl;
+}
+
+
+void Foam::fbm::frictionModels::tangentialSpring::writeState
+(
+    const label bi,
+    const wordList& bodyNames,
+    const wordList& wallNames,
+    Ostream& os
+) const
+{
+    // The springs by first body, once per evaluation
+    if (byBodyEvaluation_ != nEvaluations_ || byBody_.size() != bodyNames.size())
+    {
+        byBody_.setSize(bodyNames.size());
+        for (auto& l : byBody_)
+        {
+            l.clear();
+        }
+        forAllConstIters(springs_, iter)
+        {
+            const labelPair& c = iter.key();
+            byBody_[c.first()].append(Tuple2<label, vector>(c.second(), *iter));
+        }
+        for (auto& l : byBody_)
+        {
+            Foam::sort
+            (
+                l,
+                [](const Tuple2<label, vector>& a, const Tuple2<label, vector>& b)
+                {
+                    return a.first() < b.first();
+                }
+            );
+        }
+        byBodyEvaluation_ = nEvaluations_;
+    }
+
+    List<Tuple2<word, vector>> pairs;
+    List<Tuple2<word, vector>> walls;
+    DynamicList<Tuple2<word, vector>> p;
+    DynamicList<Tuple2<word, vector>> w;
+    for (const Tuple2<label, vector>& s : byBody_[bi])
+    {
+        if (s.first() >= 0)
+        {
+            p.append(Tuple2<word, vector>(bodyNames[s.first()], s.second()));
+        }
+        else
+        {
+            w.append
+            (
+                Tuple2<word, vector>(wallNames[-1 - s.first()], s.second())
+            );
+        }
+    }
+    pairs.transfer(p);
+    walls.transfer(w);
+    os.writeEntry("frictionPairs", pairs);
+    os.writeEntry("frictionWalls", walls);
+}
+
+
+void Foam::fbm::frictionModels::tangentialSpring::readState
+(
+    const dictionary& state,
+    const wordList& bodyNames,
+    const wordList& wallNames
+)
+{
+    HashTable<label> bodyIndex(2*bodyNames.size());
+    forAll(bodyNames, i)
+    {
+        bodyIndex.insert(bodyNames[i], i);
+    }
+    HashTable<label> wallIndex(2*wallNames.size() + 1);
+    forAll(wallNames, i)
+    {
+        wallIndex.insert(wallNames[i], i);
+    }
+
+    springs_.clear();
+    label nWith = 0;
+    forAll(bodyNames, bi)
+    {
+        const dictionary& d = state.subDict(bodyNames[bi]);
+        const bool hasPairs = d.found("frictionPairs");
+        if (hasPairs != d.found("frictionWalls"))
+        {
+            FatalIOErrorInFunction(d)
+                << "Body " << bodyNames[bi] << " of the restart state "
+                << state.name() << " has "
+                << (hasPairs ? "frictionPairs" : "frictionWalls")
+                << " without "
+                << (hasPairs ? "frictionWalls" : "frictionPairs")
+                << exit(FatalIOError);
+        }
+        if (!hasPairs)
+        {
+            continue;
+        }
+        ++nWith;
+
+        for (const word& key : {word("frictionPairs"), word("frictionWalls")})
+        {
+            const bool isPair = (key == "frictionPairs");
+            const HashTable<label>& index = isPair ? bodyIndex : wallIndex;
+            for (const auto& s : d.get<List<Tuple2<word, vector>>>(key))
+            {
+                const auto found = index.cfind(s.first());
+                if (!found.found() || (isPair && *found == bi))
+                {
+                    FatalIOErrorInFunction(d)
+                        << "Keyword " << key << " of body " << bodyNames[bi]
+                        << " in the restart state " << state.name()
+                        << " names " << s.first() << ", which is "
+                        << (found.found() ? "the body itself" : "not a ")
+                        << (found.found() ? "" : (isPair ? "body" : "wall"))
+                        << (found.found() ? "" : " of the case")
+                        << exit(FatalIOError);
+                }
+                // Pairs are kept as (i, j) with i < j, the displacement
+                // that of i's point relative to j's
+                labelPair c(bi, isPair ? *found : -1 - *found);
+                vector xi(s.second());
+                if (isPair && c.second() < c.first())
+                {
+                    c = labelPair(c.second(), c.first());
+                    xi = -xi;
+                }
+                springs_.set(c, xi);
+            }
+        }
+    }
+
+    if (nWith == 0)
+    {
+        Info<< "fbm: collisions: the restart state has no friction springs"
+            << " (written without tangentialSpring): they start unloaded"
+            << nl;
+    }
+    else if (nWith != bodyNames.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "frictionPairs and frictionWalls given for " << nWith
+            << " of the " << bodyNames.size() << " bodies in the restart"
+            << " state " << state.name() << ": give them for every body or"
+            << " for none" << exit(FatalIOError);
+    }
+    else
+    {
+        Info<< "fbm: collisions: " << springs_.size() << " friction springs"
+            << " read from the restart state" << nl;
+    }
+    ++nEvaluations_;
+}
+
+
+// ************************************************************************* //
