@@ -361,13 +361,16 @@ bool Foam::fbm::fictitiousBoundary::surfaceInside
         }
     }
 
+    // The cell search (body::findCell) uses the tet decomposition, built
+    // collectively: every processor comes here for the same bodies
+    (void)mesh_.tetBasePtIs();
     const point& X = b.centre();
     pointField pts(dirs.size());
     boolList found(dirs.size(), false);
     forAll(dirs, i)
     {
         pts[i] = X + (1 - 1e-6)*shape.support(shape.orientation(), dirs[i]);
-        found[i] = mesh_.findCell(pts[i]) >= 0;
+        found[i] = body::findCell(mesh_, *cellTree_, pts[i]) >= 0;
     }
     Pstream::listCombineGather(found, orEqOp<bool>());
     Pstream::listCombineScatter(found);

@@ -75,7 +75,9 @@ void Foam::fbm::frictionModels::tangentialSpring::beginForces
 
 void Foam::fbm::frictionModels::tangentialSpring::endForces()
 {
-    springs_.transfer(next_);
+    // Swapped, not transferred: next_ keeps its table for the next
+    // evaluation
+    springs_.swap(next_);
     ++nEvaluations_;
 }
 
@@ -87,7 +89,7 @@ Foam::vector Foam::fbm::frictionModels::tangentialSpring::force
     const vector& n,
     const scalar Fn,
     const scalar kn,
-    const inverseMassFunction& inverseMass
+    const scalar wt
 )
 {
     if (Fn <= 0 || kn <= 0)
@@ -116,14 +118,9 @@ Foam::vector Foam::fbm::frictionModels::tangentialSpring::force
     // absolute stiffness is depth k)
     const scalar kt = stiffnessRatio_*kn;
     scalar c = 0;
-    const scalar magVt = mag(vt);
-    if (dampingRatio_ > 0 && magVt > VSMALL)
+    if (dampingRatio_ > 0 && wt > 0)
     {
-        const scalar w = inverseMass(vt/magVt);
-        if (w > 0)
-        {
-            c = 2*dampingRatio_*Foam::sqrt(kt*depth_/w)/depth_;
-        }
+        c = 2*dampingRatio_*Foam::sqrt(kt*depth_/wt)/depth_;
     }
 
     vector Ft(-kt*xi - c*vt);

@@ -56,7 +56,7 @@ Foam::vector Foam::fbm::frictionModels::velocityRegularised::force
     const vector& n,
     const scalar Fn,
     const scalar kn,
-    const inverseMassFunction& inverseMass
+    const scalar wt
 )
 {
     const vector vt(tangential(v, n));
@@ -65,15 +65,13 @@ Foam::vector Foam::fbm::frictionModels::velocityRegularised::force
     {
         return Zero;
     }
-    const vector t(vt/magVt);
-    const scalar w = inverseMass(t);
-    if (w <= 0)
+    if (wt <= 0)
     {
         return Zero;
     }
 
     // Coulomb's bound, or the force that stops the sliding over tau
-    return -min(mu_*Fn, magVt/(w*tau_*depth_))*t;
+    return -min(mu_*Fn, magVt/(wt*tau_*depth_))*(vt/magVt);
 }
 
 
