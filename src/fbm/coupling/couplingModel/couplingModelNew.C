@@ -20,7 +20,16 @@ Foam::autoPtr<Foam::fbm::couplingModel> Foam::fbm::couplingModel::New
     bodySystem& system
 )
 {
+    // The paper's explicit coupling unless the case names one; said in the
+    // log either way, so that a case without the entry shows what it ran
+    const bool given = dict.found("coupling");
     const word modelType(dict.getOrDefault<word>("coupling", "explicit"));
+    Info<< "fbm: coupling " << modelType;
+    if (!given)
+    {
+        Info<< " (the default: no coupling entry in " << dict.name() << ")";
+    }
+    Info<< nl;
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
 
