@@ -62,7 +62,12 @@ const scalar theta = 20*constant::mathematical::pi/180;
 word frictionModelType;
 
 
-dictionary collisionsDict(const scalar mu, const scalar damping)
+dictionary collisionsDict
+(
+    const scalar mu,
+    const scalar damping,
+    const scalar muStatic = 0
+)
 {
     dictionary coeffs;
     coeffs.add("overlapForce", "rangePlusLinear");
@@ -83,6 +88,10 @@ dictionary collisionsDict(const scalar mu, const scalar damping)
         dictionary spring;
         spring.add("stiffnessRatio", 2.0/7);
         spring.add("dampingRatio", 0.5);
+        if (muStatic > 0)
+        {
+            spring.add("staticFrictionCoeff", muStatic);
+        }
         dict.add("tangentialSpringCoeffs", spring);
     }
     return dict;
@@ -186,14 +195,19 @@ inclineResult incline
     const scalar mu,
     const fvMesh& mesh,
     const bool rotates = true,
-    const label nSteps = 250
+    const label nSteps = 250,
+    const scalar muStatic = 0,
+    const scalar U0 = 0
 )
 {
     const boundBox& bb = mesh.bounds();
     const point X0(0.3, bb.min().y() + halfHeight + 0.012, bb.centre().z());
     PtrList<fbm::body> bodies(1);
     bodies.set(0, newBody("b0", shapeDict, X0, Zero, Zero, 0, mesh, rotates));
-    fbm::particleCollisions coll(collisionsDict(mu, 0.5), mesh, bodies);
+    fbm::particleCollisions coll
+    (
+        collisionsDict(mu, 0.5, muStatic), mesh, bodies
+    );
     const fbm::rigidBodyMotion settle(vector(0, -gMag, 0), 1e-12, 0, mesh);
     const fbm::rigidBodyMotion slope
     (
@@ -215,6 +229,8 @@ inclineResult incline
         return b.centre().x() + b.shape().support(b.state().Q(), front).x();
     };
     const scalar f0 = frontX();
+    // Set sliding down the incline at the turn (U0 > 0)
+    bodies[0].state().U() = vector(U0, 0, 0);
     scalar U1 = 0, w1 = 0, maxTilt = 0;
     for (label step = 1; step <= nSteps; ++step)
     {
@@ -515,6 +531,53 @@ int main(int argc, char *argv[])
         const inclineResult held(incline(box, 0.05, 0.5, mesh, false));
         if (spring)
         {
+            // Static friction (staticFrictionCoeff 0.5, frictionCoeff 0.2,
+            // tan(theta) 0.364 between them; not turning): from rest the
+            // block holds as with mu 0.5; set sliding at 0.5 m/s it slides
+            // on with the kinetic a = g (sin - 0.2 cos); with frictionCoeff
+            // 0.4 (above tan(theta)), set sliding at 0.2 m/s, it slows down
+            // at g (0.4 cos - sin), stops (after 0.59 s) and holds
+            const inclineResult sHeld
+            (
+                incline(box, 0.05, 0.2, mesh, false, 250, 0.5)
+            );
+            const inclineResult sSlide
+            (
+                incline(box, 0.05, 0.2, mesh, false, 250, 0.5, 0.5)
+            );
+            const inclineResult sStop
+            (
+                incline(box, 0.05, 0.4, mesh, false, 500, 0.5, 0.2)
+            );
+            fbmTest::check
+            (
+                "static 0.5, kinetic 0.2, from rest: at rest (|U| / g sin(theta) 1 s)",
+                mag(sHeld.Uend)/(gMag*s), 0, 1e-6
+            );
+            fbmTest::check
+            (
+                "static 0.5, kinetic 0.2, from rest: slid below 1e-4",
+                mag(sHeld.slip), 0, 1e-4
+            );
+            fbmTest::check
+            (
+                "static 0.5, kinetic 0.2, sliding: a = g (sin - 0.2 cos)",
+                sSlide.a/(gMag*(s - 0.2*c)), 1, 1e-3
+            );
+            // Slows down to rest at t = U0/(g (0.4 cos - sin)), 0.59 s,
+            // having slid U0^2/(2 g (0.4 cos - sin)), 0.059
+            const scalar decel = gMag*(0.4*c - s);
+            fbmTest::check
+            (
+                "static 0.5, kinetic 0.4, sliding: stops (|U| / g sin(theta) 1 s)",
+                mag(sStop.Uend)/(gMag*s), 0, 1e-6
+            );
+            fbmTest::check
+            (
+                "static 0.5, kinetic 0.4, sliding: path / U0^2/(2 g (0.4 cos - sin))",
+                sStop.distance/(0.04/(2*decel)), 1, 1e-2
+            );
+
             // The spring holds it: at rest, its front corner slid by the
             // spring's stretch only (m g sin(theta)/k_t, 2.5e-5 here).
             // Turning, it first pitches forward onto that corner (tilt

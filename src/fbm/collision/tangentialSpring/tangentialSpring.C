@@ -52,13 +52,32 @@ Foam::fbm::frictionModels::tangentialSpring::tangentialSpring
             "dampingRatio", [](scalar z){ return z >= 0 && z <= 1; }
         )
     ),
+    staticCoeff_
+    (
+        dict.subDict(typeName + "Coeffs").getOrDefault<scalar>
+        (
+            "staticFrictionCoeff", mu_
+        )
+    ),
     springs_(),
     next_(),
+    sliding_(),
+    nextSliding_(),
     dt_(0),
     nEvaluations_(0),
     byBody_(),
     byBodyEvaluation_(-1)
-{}
+{
+    if (staticCoeff_ < mu_)
+    {
+        const dictionary& coeffs = dict.subDict(typeName + "Coeffs");
+        FatalIOErrorInFunction(coeffs)
+            << "staticFrictionCoeff " << staticCoeff_ << " in "
+            << coeffs.name() << " is below frictionCoeff " << mu_
+            << ": a contact holds at least as much as it carries sliding"
+            << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -70,6 +89,7 @@ void Foam::fbm::frictionModels::tangentialSpring::beginForces
 {
     dt_ = dt;
     next_.clear();
+    nextSliding_.clear();
 }
 
 
@@ -78,6 +98,7 @@ void Foam::fbm::frictionModels::tangentialSpring::endForces()
     // Swapped, not transferred: next_ keeps its table for the next
     // evaluation
     springs_.swap(next_);
+    sliding_.swap(nextSliding_);
     ++nEvaluations_;
 }
 
@@ -125,14 +146,20 @@ Foam::vector Foam::fbm::frictionModels::tangentialSpring::force
 
     vector Ft(-kt*xi - c*vt);
 
-    // Beyond Coulomb's bound the contact slides: the force at the bound,
-    // the spring what gives it
-    const scalar bound = mu_*Fn;
+    // Beyond Coulomb's bound the contact slides: the force at the
+    // (kinetic) bound, the spring what gives it. A sticking contact holds
+    // up to the static bound, a sliding one only to the kinetic one
+    const bool slid = hasStatic() && sliding_.found(contact);
+    const scalar holds = (slid ? mu_ : staticCoeff_)*Fn;
     const scalar magFt = mag(Ft);
-    if (magFt > bound)
+    if (magFt > holds)
     {
-        Ft *= bound/magFt;
+        Ft *= mu_*Fn/magFt;
         xi = -(Ft + c*vt)/kt;
+        if (hasStatic())
+        {
+            nextSliding_.set(contact);
+        }
     }
 
     next_.set(contact, xi);
@@ -144,8 +171,13 @@ void Foam::fbm::frictionModels::tangentialSpring::writeInfo() const
 {
     Info<< "fbm: collisions: Coulomb friction, frictionCoeff " << mu_
         << " (tangentialSpring: stiffnessRatio " << stiffnessRatio_
-        << ", dampingRatio " << dampingRatio_ << "; the springs are part"
-        << " of the restart state)" << nl;
+        << ", dampingRatio " << dampingRatio_ << ", staticFrictionCoeff "
+        << staticCoeff_;
+    if (!hasStatic())
+    {
+        Info<< " (= frictionCoeff: no static friction)";
+    }
+    Info<< "; the springs are part of the restart state)" << nl;
 }
 
 
@@ -206,6 +238,29 @@ void Foam::fbm::frictionModels::tangentialSpring::writeState
     walls.transfer(w);
     os.writeEntry("frictionPairs", pairs);
     os.writeEntry("frictionWalls", walls);
+
+    // The sliding contacts among them, by the partner's name
+    if (hasStatic())
+    {
+        DynamicList<word> sp;
+        DynamicList<word> sw;
+        for (const Tuple2<label, vector>& s : byBody_[bi])
+        {
+            if (sliding_.found(labelPair(bi, s.first())))
+            {
+                if (s.first() >= 0)
+                {
+                    sp.append(bodyNames[s.first()]);
+                }
+                else
+                {
+                    sw.append(wallNames[-1 - s.first()]);
+                }
+            }
+        }
+        os.writeEntry("frictionPairsSliding", wordList(sp));
+        os.writeEntry("frictionWallsSliding", wordList(sw));
+    }
 }
 
 
@@ -228,7 +283,9 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
     }
 
     springs_.clear();
+    sliding_.clear();
     label nWith = 0;
+    label nWithSliding = 0;
     forAll(bodyNames, bi)
     {
         const dictionary& d = state.subDict(bodyNames[bi]);
@@ -279,6 +336,78 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
                 springs_.set(c, xi);
             }
         }
+
+        // Which of them slide (written with a static coefficient only)
+        const bool hasSliding = d.found("frictionPairsSliding");
+        if (hasSliding != d.found("frictionWallsSliding"))
+        {
+            FatalIOErrorInFunction(d)
+                << "Body " << bodyNames[bi] << " of the restart state "
+                << state.name() << " has "
+                << (hasSliding ? "frictionPairsSliding" : "frictionWallsSliding")
+                << " without "
+                << (hasSliding ? "frictionWallsSliding" : "frictionPairsSliding")
+                << exit(FatalIOError);
+        }
+        if (!hasSliding)
+        {
+            continue;
+        }
+        ++nWithSliding;
+        for
+        (
+            const word& key
+          : {word("frictionPairsSliding"), word("frictionWallsSliding")}
+        )
+        {
+            const bool isPair = (key == "frictionPairsSliding");
+            const HashTable<label>& index = isPair ? bodyIndex : wallIndex;
+            for (const word& name : d.get<wordList>(key))
+            {
+                const auto found = index.cfind(name);
+                labelPair c(bi, -1);
+                if (found.found())
+                {
+                    c = isPair
+                      ? labelPair(min(bi, *found), max(bi, *found))
+                      : labelPair(bi, -1 - *found);
+                }
+                if (!found.found() || !springs_.found(c))
+                {
+                    FatalIOErrorInFunction(d)
+                        << "Keyword " << key << " of body " << bodyNames[bi]
+                        << " in the restart state " << state.name()
+                        << " names " << name << ", which is not a partner"
+                        << " of the body's friction springs (" << key.substr(0, key.size() - 7)
+                        << ")" << exit(FatalIOError);
+                }
+                if (hasStatic())
+                {
+                    sliding_.set(c);
+                }
+            }
+        }
+    }
+
+    if (nWithSliding != 0 && nWithSliding != nWith)
+    {
+        FatalIOErrorInFunction(state)
+            << "frictionPairsSliding and frictionWallsSliding given for "
+            << nWithSliding << " of the " << nWith << " bodies with friction"
+            << " springs in the restart state " << state.name() << ": give"
+            << " them for every body or for none" << exit(FatalIOError);
+    }
+    if (nWith > 0 && hasStatic() && nWithSliding == 0)
+    {
+        Info<< "fbm: collisions: the restart state has no sliding contacts"
+            << " listed (written without staticFrictionCoeff): every"
+            << " contact starts sticking" << nl;
+    }
+    else if (nWithSliding > 0 && !hasStatic())
+    {
+        Info<< "fbm: collisions: the sliding contacts of the restart state"
+            << " are not used (no staticFrictionCoeff above frictionCoeff)"
+            << nl;
     }
 
     if (nWith == 0)
@@ -298,7 +427,12 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
     else
     {
         Info<< "fbm: collisions: " << springs_.size() << " friction springs"
-            << " read from the restart state" << nl;
+            << " read from the restart state";
+        if (hasStatic())
+        {
+            Info<< ", " << sliding_.size() << " of them sliding";
+        }
+        Info<< nl;
     }
     ++nEvaluations_;
 }
