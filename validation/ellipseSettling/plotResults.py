@@ -111,6 +111,11 @@ def fbmHistory(case):
     if re.search(r"^\s*extrapolatePredictor\s+yes\s*;", open(os.path.join(
             case, "system/fvSolution")).read(), re.M):
         coupling += "; 1 outer corrector, extrapolatePredictor"
+    elif coupling == "semiImplicit":
+        n = re.search(r"^\s*nOuterCorrectors\s+(\d+)\s*;", open(os.path.join(
+            case, "system/fvSolution")).read(), re.M)
+        coupling += "; %s outer corrector%s" % (
+            n.group(1), "" if n.group(1) == "1" else "s")
     return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 
