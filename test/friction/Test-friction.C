@@ -261,6 +261,20 @@ inclineResult incline
 }
 
 
+// A body the friction holds on the incline: at rest (|U| below 1e-6 of
+// g sin(theta) 1 s), its contact point slid by the spring's stretch only
+// (below 1e-4)
+void checkHeld(const string& what, const inclineResult& r)
+{
+    fbmTest::check
+    (
+        what + ": at rest (|U| / g sin(theta) 1 s)",
+        mag(r.Uend)/(gMag*Foam::sin(theta)), 0, 1e-6
+    );
+    fbmTest::check(what + ": slid below 1e-4", mag(r.slip), 0, 1e-4);
+}
+
+
 // Two bodies colliding obliquely without gravity: momentum, angular
 // momentum, energy, and the change of the spins
 void oblique
@@ -476,16 +490,7 @@ int main(int argc, char *argv[])
         {
             // The spring holds it: at rest, displaced by the spring's
             // stretch only (m g sin(theta)/k_t, below 1e-4 here)
-            fbmTest::check
-            (
-                "ellipsoid, mu 0.5, spring: at rest (|U| / g sin(theta) 1 s)",
-                mag(held.Uend)/(gMag*s), 0, 1e-6
-            );
-            fbmTest::check
-            (
-                "ellipsoid, mu 0.5, spring: slid below 1e-4",
-                mag(held.slip), 0, 1e-4
-            );
+            checkHeld("ellipsoid, mu 0.5, spring", held);
         }
         else
         {
@@ -549,16 +554,7 @@ int main(int argc, char *argv[])
             (
                 incline(box, 0.05, 0.4, mesh, false, 500, 0.5, 0.2)
             );
-            fbmTest::check
-            (
-                "static 0.5, kinetic 0.2, from rest: at rest (|U| / g sin(theta) 1 s)",
-                mag(sHeld.Uend)/(gMag*s), 0, 1e-6
-            );
-            fbmTest::check
-            (
-                "static 0.5, kinetic 0.2, from rest: slid below 1e-4",
-                mag(sHeld.slip), 0, 1e-4
-            );
+            checkHeld("static 0.5, kinetic 0.2, from rest", sHeld);
             fbmTest::check
             (
                 "static 0.5, kinetic 0.2, sliding: a = g (sin - 0.2 cos)",
@@ -584,20 +580,8 @@ int main(int argc, char *argv[])
             // 0.016, the centre moving 8e-4 along the incline with it),
             // slowly: at rest from about t = 4 (|U| 2.8e-7 at t = 5)
             const inclineResult turning(incline(box, 0.05, 0.5, mesh, true, 2500));
-            for (const inclineResult* r : {&turning, &held})
-            {
-                const word what(r == &held ? "not turning, " : "turning, 5 s, ");
-                fbmTest::check
-                (
-                    "mu 0.5, spring, " + what + "at rest (|U| / g sin(theta) 1 s)",
-                    mag(r->Uend)/(gMag*s), 0, 1e-6
-                );
-                fbmTest::check
-                (
-                    "mu 0.5, spring, " + what + "corner slid below 1e-4",
-                    mag(r->slip), 0, 1e-4
-                );
-            }
+            checkHeld("mu 0.5, spring, turning, 5 s, corner", turning);
+            checkHeld("mu 0.5, spring, not turning, corner", held);
         }
         else
         {

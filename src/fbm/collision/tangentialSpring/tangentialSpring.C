@@ -28,6 +28,35 @@ namespace frictionModels
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Whether the body's block d of the restart state holds both entries a and
+// b (true) or neither (false); one without the other is an error
+bool givenTogether
+(
+    const Foam::dictionary& d,
+    const Foam::word& a,
+    const Foam::word& b,
+    const Foam::dictionary& state
+)
+{
+    const bool hasA = d.found(a);
+    if (hasA != d.found(b))
+    {
+        FatalIOErrorInFunction(d)
+            << "Body " << d.dictName() << " of the restart state "
+            << state.name() << " has " << (hasA ? a : b) << " without "
+            << (hasA ? b : a) << Foam::exit(Foam::FatalIOError);
+    }
+    return hasA;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::frictionModels::tangentialSpring::tangentialSpring
@@ -289,18 +318,7 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
     forAll(bodyNames, bi)
     {
         const dictionary& d = state.subDict(bodyNames[bi]);
-        const bool hasPairs = d.found("frictionPairs");
-        if (hasPairs != d.found("frictionWalls"))
-        {
-            FatalIOErrorInFunction(d)
-                << "Body " << bodyNames[bi] << " of the restart state "
-                << state.name() << " has "
-                << (hasPairs ? "frictionPairs" : "frictionWalls")
-                << " without "
-                << (hasPairs ? "frictionWalls" : "frictionPairs")
-                << exit(FatalIOError);
-        }
-        if (!hasPairs)
+        if (!givenTogether(d, "frictionPairs", "frictionWalls", state))
         {
             continue;
         }
@@ -338,18 +356,13 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
         }
 
         // Which of them slide (written with a static coefficient only)
-        const bool hasSliding = d.found("frictionPairsSliding");
-        if (hasSliding != d.found("frictionWallsSliding"))
-        {
-            FatalIOErrorInFunction(d)
-                << "Body " << bodyNames[bi] << " of the restart state "
-                << state.name() << " has "
-                << (hasSliding ? "frictionPairsSliding" : "frictionWallsSliding")
-                << " without "
-                << (hasSliding ? "frictionWallsSliding" : "frictionPairsSliding")
-                << exit(FatalIOError);
-        }
-        if (!hasSliding)
+        if
+        (
+            !givenTogether
+            (
+                d, "frictionPairsSliding", "frictionWallsSliding", state
+            )
+        )
         {
             continue;
         }
