@@ -311,6 +311,21 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
         wallIndex.insert(wallNames[i], i);
     }
 
+    // The contact of body bi with the body or wall of that name, as the
+    // tables key it (pairs (i, j) with i < j, walls (i, -1 - w)); (-1, -1)
+    // for a name the case does not have, or the body itself
+    auto contactOf = [&](const label bi, const word& name, const bool isPair)
+    {
+        const auto found = (isPair ? bodyIndex : wallIndex).cfind(name);
+        if (!found.found() || (isPair && *found == bi))
+        {
+            return labelPair(-1, -1);
+        }
+        return isPair
+          ? labelPair(min(bi, *found), max(bi, *found))
+          : labelPair(bi, -1 - *found);
+    };
+
     springs_.clear();
     sliding_.clear();
     label nWith = 0;
@@ -327,31 +342,23 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
         for (const word& key : {word("frictionPairs"), word("frictionWalls")})
         {
             const bool isPair = (key == "frictionPairs");
-            const HashTable<label>& index = isPair ? bodyIndex : wallIndex;
             for (const auto& s : d.get<List<Tuple2<word, vector>>>(key))
             {
-                const auto found = index.cfind(s.first());
-                if (!found.found() || (isPair && *found == bi))
+                const labelPair c(contactOf(bi, s.first(), isPair));
+                if (c.first() < 0)
                 {
                     FatalIOErrorInFunction(d)
                         << "Keyword " << key << " of body " << bodyNames[bi]
                         << " in the restart state " << state.name()
                         << " names " << s.first() << ", which is "
-                        << (found.found() ? "the body itself" : "not a ")
-                        << (found.found() ? "" : (isPair ? "body" : "wall"))
-                        << (found.found() ? "" : " of the case")
+                        << (s.first() == bodyNames[bi] ? "the body itself"
+                          : isPair ? "not a body of the case"
+                          : "not a wall of the case")
                         << exit(FatalIOError);
                 }
-                // Pairs are kept as (i, j) with i < j, the displacement
-                // that of i's point relative to j's
-                labelPair c(bi, isPair ? *found : -1 - *found);
-                vector xi(s.second());
-                if (isPair && c.second() < c.first())
-                {
-                    c = labelPair(c.second(), c.first());
-                    xi = -xi;
-                }
-                springs_.set(c, xi);
+                // The displacement is that of the first body's point
+                // relative to the second's
+                springs_.set(c, c.first() == bi ? s.second() : -s.second());
             }
         }
 
@@ -374,24 +381,17 @@ void Foam::fbm::frictionModels::tangentialSpring::readState
         )
         {
             const bool isPair = (key == "frictionPairsSliding");
-            const HashTable<label>& index = isPair ? bodyIndex : wallIndex;
             for (const word& name : d.get<wordList>(key))
             {
-                const auto found = index.cfind(name);
-                labelPair c(bi, -1);
-                if (found.found())
-                {
-                    c = isPair
-                      ? labelPair(min(bi, *found), max(bi, *found))
-                      : labelPair(bi, -1 - *found);
-                }
-                if (!found.found() || !springs_.found(c))
+                const labelPair c(contactOf(bi, name, isPair));
+                if (!springs_.found(c))
                 {
                     FatalIOErrorInFunction(d)
                         << "Keyword " << key << " of body " << bodyNames[bi]
                         << " in the restart state " << state.name()
                         << " names " << name << ", which is not a partner"
-                        << " of the body's friction springs (" << key.substr(0, key.size() - 7)
+                        << " of the body's friction springs ("
+                        << (isPair ? "frictionPairs" : "frictionWalls")
                         << ")" << exit(FatalIOError);
                 }
                 if (hasStatic())
