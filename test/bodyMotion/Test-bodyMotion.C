@@ -28,13 +28,24 @@ Description
       is a_exact (1 - r^n), r = C_a M_f/(M + C_a M_f);
     - the sub-steps of the contact model (kick, drift, kick: velocity
       Verlet) with a constant force: U = g t and X = X0 + g t^2/2, exact
-      as well, and the same as the plain steps.
+      as well, and the same as the plain steps;
+    - the fluid's rate (fbm::fluidRate) of a body's velocity history
+      against OpenFOAM's own backward ddt of a uniform field with that
+      history, over steps of varying size;
+    - the virtual mass with the backward time scheme: a model fluid whose
+      force is the added mass -C_a M_f D (D the fluid's rate) makes the
+      explicit steps repeat the implicit (monolithic) recurrence
+      (M + (1 + w) C_a M_f) a^{n+1} = (M - M_f) g + w C_a M_f a^n step by
+      step (steps of constant size), with no mode alternating from step
+      to step, and tend to (M - M_f) g/(M + C_a M_f).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "bodyInput.H"
 #include "rigidBodyMotion.H"
+#include "fluidRate.H"
+#include "backwardDdtScheme.H"
 #include "fbmTest.H"
 
 using namespace Foam;
@@ -198,6 +209,108 @@ int main(int argc, char *argv[])
         (
             "sub-steps: mean acceleration g", s.acceleration(),
             g*(1 - 1e-12), 1e-9*mag(g)
+        );
+    }
+
+    // The fluid's rate against backwardDdtScheme: a uniform field with the
+    // body's velocity history, steps of varying size (the first one Euler,
+    // as backwardDdtScheme steps while the time index is below 2)
+    const fbm::fluidRate bdf2(runTime, fbm::fluidRate::scheme::backward);
+    {
+        fv::backwardDdtScheme<vector> ddtScheme(mesh);
+        volVectorField Uf
+        (
+            IOobject("Ufluid", runTime.timeName(), mesh),
+            mesh,
+            dimensionedVector(dimVelocity, Zero)
+        );
+        Uf.oldTime().oldTime();
+        vector Uold(Zero), aOld(Zero);
+        const scalar steps[] = {1e-3, 1e-3, 1.3e-3, 0.7e-3, 0.9e-3, 1.6e-3};
+        for (const scalar dtk : steps)
+        {
+            runTime.setDeltaT(dtk);
+            ++runTime;
+            const scalar tk = runTime.value();
+            const vector Uk
+            (
+                Foam::sin(40*tk), Foam::cos(25*tk) - 1, twoD ? 0 : tk*tk
+            );
+            Uf == dimensionedVector("U", dimVelocity, Uk);
+            const vector a((Uk - Uold)/dtk);
+            const vector ddt(ddtScheme.fvcDdt(Uf)().primitiveField()[0]);
+            fbmTest::check
+            (
+                "fluid rate = backward ddt(U) at t = " + Foam::name(tk)
+              + " (w " + Foam::name(bdf2.weight()) + ")",
+                bdf2.rate(a, aOld), ddt, 1e-9*mag(ddt)
+            );
+            aOld = a;
+            Uold = Uk;
+        }
+    }
+
+    // Virtual mass with the backward scheme and a model fluid of added
+    // mass C_a M_f: from rest, steps of constant size
+    {
+        s.U() = Zero;
+        s.omega() = Zero;
+        s.acceleration() = Zero;
+        s.angularAcceleration() = Zero;
+        s.beginStep();
+        s.beginStep();
+        b.setForce(vector::zero, vector::zero);
+
+        const scalar rhoF = 0.8*b.rho();
+        const scalar Ca = 1;
+        const scalar V = b.shape().volume();
+        const scalar M = b.rho()*V, Mf = rhoF*V;
+        const fbm::rigidBodyMotion motion(g, rhoF, Ca, mesh, &bdf2);
+        const vector aLimit((M - Mf)/(M + Ca*Mf)*g);
+
+        // A step of the same size first: the weights of the steps below
+        // are all dt/(dt + dt) = 1/2 (with a varying step the lag takes
+        // the current step's weight for the last step's rate as well)
+        runTime.setDeltaT(dt);
+        ++runTime;
+        vector aMono(Zero);
+        scalar worst = 0, w = 0;
+        bool alternates = false;
+        vector aPrev(Zero), daPrev(Zero);
+        for (label i = 0; i < 40; ++i)
+        {
+            ++runTime;
+            w = bdf2.weight();
+            s.beginStep();
+            motion.move(b, dt);
+            // The model fluid's force held over the next step
+            b.setForce
+            (
+                -Ca*Mf*bdf2.rate(s.acceleration(), s.acceleration0()),
+                vector::zero
+            );
+
+            aMono = ((M - Mf)*g + w*Ca*Mf*aMono)/(M + (1 + w)*Ca*Mf);
+            worst = max(worst, mag(s.acceleration() - aMono)/mag(g));
+            const vector da(s.acceleration() - aPrev);
+            if (i > 0 && (da & daPrev) < 0) alternates = true;
+            daPrev = da;
+            aPrev = s.acceleration();
+        }
+        fbmTest::check
+        (
+            "backward virtual mass: explicit = monolithic (w "
+          + Foam::name(w) + ")", worst, 0, 1e-12
+        );
+        fbmTest::check
+        (
+            "backward virtual mass: no alternating mode",
+            scalar(alternates), 0, 0
+        );
+        fbmTest::check
+        (
+            "backward virtual mass: a -> (M - M_f) g/(M + C_a M_f)",
+            s.acceleration(), aLimit, 1e-10*mag(g)
         );
     }
 

@@ -34,12 +34,25 @@ Foam::fbm::bodyState::bodyState
     theta_(Zero),
     a_(Zero),
     omegaDot_(Zero),
+    a0_(Zero),
+    omegaDot0_(Zero),
+    a00_(Zero),
+    omegaDot00_(Zero),
     force_(Zero),
     torque_(Zero)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::bodyState::beginStep()
+{
+    a00_ = a0_;
+    omegaDot00_ = omegaDot0_;
+    a0_ = a_;
+    omegaDot0_ = omegaDot_;
+}
+
 
 void Foam::fbm::bodyState::rotate(const vector& phi)
 {
@@ -91,7 +104,7 @@ Type Foam::fbm::bodyState::readEntry
 }
 
 
-void Foam::fbm::bodyState::read(const dictionary& dict)
+bool Foam::fbm::bodyState::read(const dictionary& dict)
 {
     centre_ = readEntry<point>(dict, "centre");
     U_ = readEntry<vector>(dict, "U");
@@ -100,6 +113,15 @@ void Foam::fbm::bodyState::read(const dictionary& dict)
     theta_ = readEntry<vector>(dict, "theta");
     a_ = readEntry<vector>(dict, "acceleration");
     omegaDot_ = readEntry<vector>(dict, "angularAcceleration");
+    const bool previous =
+        dict.found("acceleration0") || dict.found("angularAcceleration0");
+    a0_ = previous ? readEntry<vector>(dict, "acceleration0") : a_;
+    omegaDot0_ =
+        previous
+      ? readEntry<vector>(dict, "angularAcceleration0")
+      : omegaDot_;
+    a00_ = a0_;
+    omegaDot00_ = omegaDot0_;
     force_ = readEntry<vector>(dict, "force");
     torque_ = readEntry<vector>(dict, "torque");
 
@@ -111,6 +133,8 @@ void Foam::fbm::bodyState::read(const dictionary& dict)
             << " is not a rotation (Q Q^T = I, det Q = 1)"
             << exit(FatalIOError);
     }
+
+    return previous;
 }
 
 
@@ -123,6 +147,8 @@ void Foam::fbm::bodyState::write(Ostream& os) const
     os.writeEntry("theta", theta_);
     os.writeEntry("acceleration", a_);
     os.writeEntry("angularAcceleration", omegaDot_);
+    os.writeEntry("acceleration0", a0_);
+    os.writeEntry("angularAcceleration0", omegaDot0_);
     os.writeEntry("force", force_);
     os.writeEntry("torque", torque_);
 }

@@ -111,6 +111,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
     forceModel_(forceModel::New(*this)),
     compareModels_(),
     coupling_(),
+    rate_(),
     motion_(),
     collisions_(),
     output_(),
@@ -129,11 +130,14 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
     readState();
     setPrescribedMotions(false);
 
+    rate_.reset(new fluidRate(mesh, anyMoves()));
+
     motion_.reset
     (
         new rigidBodyMotion
         (
-            readGravity(), rhoFluid_, coupling_->addedMassCoeff(), mesh
+            readGravity(), rhoFluid_, coupling_->addedMassCoeff(), mesh,
+            rate_.get()
         )
     );
 
@@ -199,7 +203,7 @@ Foam::fbm::footprint Foam::fbm::bodySystem::bodyFootprint() const
     (
         mesh_, bodies_, rhoFluid_, fb_.alpha(), fb_.Us(), fb_.bodyID(),
         fb_.activeCells(), fb_.lambda(),
-        coupling_->directForce(), coupling_->directTorque()
+        coupling_->directForce(), coupling_->directTorque(), rate_.get()
     );
 }
 
@@ -231,9 +235,26 @@ Foam::scalar Foam::fbm::bodySystem::maxDeltaT() const
 }
 
 
+bool Foam::fbm::bodySystem::anyMoves() const
+{
+    for (const body& b : bodies_)
+    {
+        if (b.moves())
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 bool Foam::fbm::bodySystem::moveBodies()
 {
     times_.newStep();
+    for (body& b : bodies_)
+    {
+        b.state().beginStep();
+    }
     return coupling_->beforeFlow();
 }
 

@@ -110,6 +110,7 @@ void Foam::fbm::bodySystem::readState()
     // The cell search uses the tet decomposition, built collectively
     (void)mesh_.tetBasePtIs();
     wordHashSet names;
+    label nOlder = 0;
     for (body& b : bodies_)
     {
         names.insert(b.name());
@@ -123,7 +124,10 @@ void Foam::fbm::bodySystem::readState()
                 << objectPath() << exit(FatalIOError);
         }
         const dictionary& dict = *dictPtr;
-        b.state().read(dict);
+        if (!b.state().read(dict))
+        {
+            ++nOlder;
+        }
 
         // The state must be one the run could have reached
         const scalar speed = b.maxSpeed();
@@ -163,6 +167,14 @@ void Foam::fbm::bodySystem::readState()
     coupling_->readState(state);
     stateFile_ = stateFile;
     Info<< "fbm: body state read from " << stateFile << nl;
+    if (nOlder)
+    {
+        Info<< "fbm: " << nOlder << " of " << bodies_.size() << " body states"
+            << " in " << stateFile << " have no acceleration0 (written before"
+            << " it was kept): the step before the last takes the last"
+            << " step's accelerations (only the backward time scheme's"
+            << " first step uses them)" << nl;
+    }
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "principalAxes.H"
 #include "body.H"
 #include "polyMesh.H"
+#include "fluidRate.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -22,13 +23,15 @@ Foam::fbm::rigidBodyMotion::rigidBodyMotion
     const vector& g,
     const scalar rhoFluid,
     const scalar addedMassCoeff,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const fluidRate* rate
 )
 :
     g_(g),
     rhoFluid_(rhoFluid),
     addedMassCoeff_(addedMassCoeff),
-    planeMask_(1, 1, 1)
+    planeMask_(1, 1, 1),
+    rate_(rate)
 {
     const Vector<label>& sd = mesh.solutionD();
     for (direction d = 0; d < vector::nComponents; ++d)
@@ -43,6 +46,27 @@ Foam::fbm::rigidBodyMotion::rigidBodyMotion
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::scalar Foam::fbm::rigidBodyMotion::rateWeight() const
+{
+    return (rate_ && addedMassCoeff_ > 0) ? rate_->weight() : 0;
+}
+
+
+Foam::vector Foam::fbm::rigidBodyMotion::laggedRate
+(
+    const vector& x,
+    const vector& x00,
+    const scalar w
+)
+{
+    if (w == 0)
+    {
+        return x;
+    }
+    return (1 + 2*w)*x - w*x00;
+}
+
+
 void Foam::fbm::rigidBodyMotion::translationTerms
 (
     const body& b,
@@ -56,9 +80,14 @@ void Foam::fbm::rigidBodyMotion::translationTerms
     const scalar M = b.rho()*V;
     const scalar Mf = rhoFluid_*V;
 
+    // aLag is the last step's acceleration; the one before it is the
+    // state's acceleration00 (bodyState::beginStep() ran at this step's
+    // start)
+    const scalar w = rateWeight();
     Fheld = (M - Mf)*g_ + b.force();
-    Flag = addedMassCoeff_*Mf*aLag;
-    Meff = M + addedMassCoeff_*Mf;
+    Flag = addedMassCoeff_*Mf
+       *laggedRate(aLag, b.state().acceleration00(), w);
+    Meff = M + addedMassCoeff_*Mf*(1 + w);
 }
 
 
@@ -84,12 +113,14 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
     const symmTensor I(b.inertia());
     const symmTensor If((rhoFluid_/b.rho())*I);
     const vector& omega = b.omega();
+    const scalar w = rateWeight();
     vector wDot
     (
-        inv(I + addedMassCoeff_*If)
+        inv(I + addedMassCoeff_*(1 + w)*If)
       & (
             T - (omega ^ (I & omega))
-          + addedMassCoeff_*(If & omegaDotLag)
+          + addedMassCoeff_
+           *(If & laggedRate(omegaDotLag, b.state().angularAcceleration00(), w))
         )
     );
     // 2D: rotation about the empty direction only
@@ -130,9 +161,20 @@ Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
     {
         return T;
     }
+    const scalar w = rateWeight();
+    if (w == 0)
+    {
+        return
+            (T + c*((I & omegaDotLag) + (omega ^ (I & omega))))
+           /(1 + c);
+    }
+    const vector lag
+    (
+        laggedRate(omegaDotLag, b.state().angularAcceleration00(), w)
+    );
     return
-        (T + c*((I & omegaDotLag) + (omega ^ (I & omega))))
-       /(1 + c);
+        (T + c*((I & lag) + (1 + w)*(omega ^ (I & omega))))
+       /(1 + c*(1 + w));
 }
 
 

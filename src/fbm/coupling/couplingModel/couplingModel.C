@@ -68,6 +68,20 @@ void Foam::fbm::couplingModel::rejectContactProjection() const
 }
 
 
+void Foam::fbm::couplingModel::requireEuler(const string& why) const
+{
+    const fvMesh& mesh = system_.mesh();
+    const word ddtU(mesh.ddtScheme("ddt(U)")[0].wordToken());
+    if (system_.anyMoves() && ddtU != "Euler")
+    {
+        FatalIOErrorInFunction(mesh.schemesDict().subDict("ddtSchemes"))
+            << "coupling " << type() << " (" << dict_.name() << ")"
+            << " needs ddtSchemes Euler for ddt(U), not " << ddtU << nl
+            << "    " << why.c_str() << exit(FatalIOError);
+    }
+}
+
+
 void Foam::fbm::couplingModel::rejectAddedMassCoeff() const
 {
     const scalar Ca = dict_.getCheckOrDefault<scalar>

@@ -294,16 +294,11 @@ Foam::fbm::couplingModels::rigidProjection::rigidProjection
     // The added mass is in the fluid solve: no virtual-mass term
     rejectAddedMassCoeff();
 
-    // The extra inertia of the bodies is an implicit Euler term
-    const fvMesh& mesh = system.mesh();
-    const word ddtU(mesh.ddtScheme("ddt(U)")[0].wordToken());
-    if (ddtU != "Euler")
-    {
-        FatalIOErrorInFunction(mesh.schemesDict())
-            << "coupling rigidProjection (" << dict.name() << ")"
-            << " needs ddtSchemes Euler for ddt(U), not " << ddtU
-            << exit(FatalIOError);
-    }
+    requireEuler
+    (
+        "The extra inertia of the bodies is an implicit Euler term of the"
+        " momentum matrix."
+    );
 
     const PtrList<body>& bodies = system.bodies();
     forAll(bodies, bi)

@@ -237,6 +237,13 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
 {
     rejectContactProjection();
     rejectAddedMassCoeff();
+    requireEuler
+    (
+        "Its body terms (the shell's and the damping mass's lagged inertia,"
+        " the pressure impulse) are written for Euler; the backward scheme"
+        " is validated with the explicit coupling only"
+        " (validation/settlingParticle)."
+    );
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it

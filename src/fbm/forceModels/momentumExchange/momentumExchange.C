@@ -81,9 +81,10 @@ void Foam::fbm::forceModels::momentumExchange::calcForces
         {
             const bodyState& s = b.state();
             const scalar Vf = b.shape().volume();
-            force[bi] += rhoFluid*Vf*s.acceleration();
+            force[bi] += rhoFluid*Vf*fp.fluidAcceleration(s);
             torque[bi] +=
-                (rhoFluid/b.rho())*(b.inertia() & s.angularAcceleration());
+                (rhoFluid/b.rho())
+               *(b.inertia() & fp.fluidAngularAcceleration(s));
         }
     }
 

@@ -1,0 +1,64 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fbmFoam: fictitious boundary method for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fbmFoam, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fluidRate.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fbm::fluidRate::fluidRate(const fvMesh& mesh, const bool bodiesMove)
+:
+    time_(mesh.time()),
+    scheme_(scheme::Euler)
+{
+    ITstream& is = mesh.ddtScheme("ddt(U)");
+    const word name(is);
+    if (name == "backward")
+    {
+        scheme_ = scheme::backward;
+    }
+    else if (name != "Euler" && bodiesMove)
+    {
+        const dictionary& schemes = mesh.schemesDict();
+        FatalIOErrorInFunction(schemes.subDict("ddtSchemes"))
+            << "ddt scheme '" << name << "' for ddt(U) in "
+            << schemes.name() << ": with moving bodies fbmFoam takes"
+            << " Euler or backward (the bodies' added-mass and enclosed-"
+            << "fluid terms follow the fluid's time scheme)"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::fbm::fluidRate::fluidRate(const Time& time, const scheme s)
+:
+    time_(time),
+    scheme_(s)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fbm::fluidRate::weight() const
+{
+    // backwardDdtScheme: Euler while timeIndex < 2
+    if (scheme_ == scheme::Euler || time_.timeIndex() < 2)
+    {
+        return 0;
+    }
+    const scalar dt = time_.deltaTValue();
+    const scalar dt0 = time_.deltaT0Value();
+    return dt/(dt + dt0);
+}
+
+
+// ************************************************************************* //
