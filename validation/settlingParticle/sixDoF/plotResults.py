@@ -14,11 +14,14 @@ section 2). Reads every run in runs/ (made by ./Allrun):
                                 with the DKT contact model
     runs/fbmFoamScaled-L<N>     the same, the contact model scaled with h
     runs/fbmFoamDamped-L<N>     scaled, and with a normal dashpot
-    runs/fbmExplicit-L<N>       fbmFoam, the tutorial as it is (explicit
-                                coupling, addedMassCoeff 1, one outer
-                                corrector, extrapolatePredictor), no
-                                contact model, to t = 0.47 (free fall only)
-    runs/fbmSemiImplicit-L<N>   the same with coupling semiImplicit
+    runs/fbmExplicit-L<N>       fbmFoam, the tutorial until 2026-12-05
+                                (explicit coupling, addedMassCoeff 1, one
+                                outer corrector, extrapolatePredictor, the
+                                Euler time scheme), no contact model, to
+                                t = 0.47 (free fall only)
+    runs/fbmBackward-L<N>       the same with the backward time scheme:
+                                the tutorial as it is
+    runs/fbmSemiImplicit-L<N>   fbmExplicit with coupling semiImplicit
     runs/fbmOuter3-L<N>         the same with three outer correctors, no
                                 extrapolatePredictor, no minIter (the
                                 settings of the fbmFoam* runs above)
@@ -40,7 +43,7 @@ and writes
                   results.csv whose run is not in runs/ is kept as it is
                   (runs/ is scratch: the rows of earlier runs stay)
     goal.csv      per free-fall fbmFoam row (fbmOuter3, fbmExplicit,
-                  fbmSemiImplicit): its error against the finest
+                  fbmBackward, fbmSemiImplicit): its error against the finest
                   body-fitted run, the body-fitted CPU time at the same
                   error (along the body-fitted levels timed with them,
                   below) and the ratio of the two (the issue's goal: at
@@ -262,7 +265,9 @@ order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmExplicit": 6, "fbmSemiImplicit": 7,
          "fbmExplicitCoOnly": 8, "fbmSemiImplicitCoOnly": 9,
          "fbmExplicitGraded": 10, "fbmExplicitGradedCoOnly": 11,
-         "fbmSemiImplicitGraded": 12, "fbmSemiImplicitGradedCoOnly": 13}
+         "fbmSemiImplicitGraded": 12, "fbmSemiImplicitGradedCoOnly": 13,
+         "fbmBackward": 14, "fbmBackwardCoOnly": 15,
+         "fbmBackwardGraded": 16, "fbmBackwardGradedCoOnly": 17}
 
 runs = []
 repeats = []
@@ -375,7 +380,7 @@ if bfRows:
     bfPtsCo = errorLine(coOnly=True)
     for r in rows:
         if not r["method"].startswith(("fbmOuter3", "fbmExplicit",
-                                       "fbmSemiImplicit")) \
+                                       "fbmSemiImplicit", "fbmBackward")) \
                 or not r["Re_max"]:
             continue
         pts = bfPtsCo if r["method"].endswith("CoOnly") else bfPts
@@ -461,13 +466,18 @@ label = {
     "fbmFoamScaled": "fbmFoam, contact scaled with h",
     "fbmFoamDamped": "fbmFoam, contact scaled + dashpot",
     "fbmOuter3": "fbmFoam, 3 outer correctors",
-    "fbmExplicit": "fbmFoam, tutorial (explicit, extrapolated)",
+    "fbmExplicit": "fbmFoam, explicit, extrapolated, Euler",
+    "fbmBackward": "fbmFoam, tutorial (explicit, extrapolated, backward)",
+    "fbmBackwardCoOnly": "fbmFoam, tutorial, step by maxCo alone",
+    "fbmBackwardGraded": "fbmFoam, tutorial, graded mesh",
+    "fbmBackwardGradedCoOnly": "fbmFoam, tutorial, graded mesh, step by "
+                               "maxCo alone",
     "fbmSemiImplicit": "fbmFoam, semiImplicit",
     "bodyFittedCoOnly": "body-fitted, step by maxCo alone",
-    "fbmExplicitCoOnly": "fbmFoam, tutorial, step by maxCo alone",
+    "fbmExplicitCoOnly": "fbmFoam, explicit Euler, step by maxCo alone",
     "fbmSemiImplicitCoOnly": "fbmFoam, semiImplicit, step by maxCo alone",
-    "fbmExplicitGraded": "fbmFoam, tutorial, graded mesh",
-    "fbmExplicitGradedCoOnly": "fbmFoam, tutorial, graded mesh, step by "
+    "fbmExplicitGraded": "fbmFoam, explicit Euler, graded mesh",
+    "fbmExplicitGradedCoOnly": "fbmFoam, explicit Euler, graded mesh, step by "
                                "maxCo alone",
     "fbmSemiImplicitGraded": "fbmFoam, semiImplicit, graded mesh",
     "fbmSemiImplicitGradedCoOnly": "fbmFoam, semiImplicit, graded mesh, "
@@ -481,7 +491,10 @@ methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
                 "fbmExplicitGraded": "tab:cyan",
                 "fbmExplicitGradedCoOnly": "darkcyan",
                 "fbmSemiImplicitGraded": "tab:brown",
-                "fbmSemiImplicitGradedCoOnly": "sienna"}
+                "fbmSemiImplicitGradedCoOnly": "sienna",
+                "fbmBackward": "black", "fbmBackwardCoOnly": "dimgray",
+                "fbmBackwardGraded": "darkgoldenrod",
+                "fbmBackwardGradedCoOnly": "goldenrod"}
 levelStyle = {3: "--", 4: "-", 5: "-."}
 for m, c in methodColour.items():
     for lvl, ls in levelStyle.items():
@@ -489,7 +502,7 @@ for m, c in methodColour.items():
 endMark = {"endTime": "o", "timeStepCollapse": "x", "error": "X", "cpuLimit": "s",
            "maxStages": "P", "unknown": "?"}
 
-fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(16, 5.2))
+fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(16, 9))
 for method, level, data, row in runs:
     t, x, y, ux, uy, cpu, total = data
     st = style.get((method, level), dict(color="k", ls="-"))
@@ -517,7 +530,8 @@ offScale = ["%s L%d %.1f" % (label[r[0]], r[1], float(r[3]["U_end"]))
 if offScale:
     ax1.text(0.02, 0.97, "off scale at the end [cm/s]:\n" + "\n".join(offScale),
              transform=ax1.transAxes, fontsize=7, va="top")
-ax1.legend(fontsize=7, loc="lower center")
+ax1.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.1),
+           ncol=2)
 ax2.axhline(1, color="grey", lw=0.8, ls=":")
 ax2.axhline(WINDOW, color="grey", lw=0.8, ls="--")
 ax2.set_xlabel("t [s]")
@@ -537,8 +551,17 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
             ("fbmFoam", "fbmFoam, 3 outer correctors, earlier session "
              "(runs to the wall)", "tab:red", "s"),
             ("fbmOuter3", "fbmFoam, 3 outer correctors", "tab:orange", "s"),
-            ("fbmExplicit", "fbmFoam, tutorial: 1 corrector, extrapolated, "
-             "explicit", "tab:green", "D"),
+            ("fbmExplicit", "fbmFoam, 1 corrector, extrapolated, "
+             "explicit, Euler (the tutorial until 2026-12-05)", "tab:green",
+             "D"),
+            ("fbmBackward", "fbmFoam, tutorial: the same with backward",
+             "black", "P"),
+            ("fbmBackwardCoOnly", "fbmFoam tutorial (backward), step by "
+             "maxCo 0.5 alone", "dimgray", "P"),
+            ("fbmBackwardGraded", "fbmFoam tutorial (backward), graded mesh",
+             "darkgoldenrod", "P"),
+            ("fbmBackwardGradedCoOnly", "fbmFoam tutorial (backward), graded "
+             "mesh, step by maxCo alone", "goldenrod", "P"),
             ("fbmSemiImplicit", "fbmFoam, the same with coupling "
              "semiImplicit", "tab:purple", "^"),
             ("bodyFittedCoOnly", "body-fitted, step by maxCo 0.5 alone "
@@ -632,7 +655,7 @@ ax3.set_title("Accuracy against cost: error of Re_max (gap >= 2 d) vs the "
               "symbols: earlier session, CPU times about 1.5 x lower)",
               fontsize=8)
 ax3.grid(alpha=0.3, which="both")
-ax3.legend(fontsize=6, loc="upper right")
+ax3.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.1))
 fig.suptitle("Settling disk, nu = 0.1, rho_s = 1.5: stock OpenFOAM "
              "body-fitted (pimpleFoam + sixDoF, morphing mesh) vs fbmFoam",
              fontsize=11)
