@@ -107,6 +107,7 @@ for pat, lab, m in (("moving-R%s-lagged", "lagged, Co_body 0.5", "o-"),
                     ("moving-R%s-extrap-nCorr4", "extrapolated, 4 PISO corr., Co_body 0.5", "D-"),
                     ("moving-R%s-extrap-nCorr3", "extrapolated, 3 PISO corr., Co_body 0.5", "x--"),
                     ("moving-R%s-flux", "extrapolated flux only, Co_body 0.5", "P-"),
+                    ("moving-R%s-flux-backward", "extrapolated flux only, backward, Co_body 0.5", "*-"),
                     ("moving-R%s-lagged-Co0.25", "lagged, Co_body 0.25", "^"),
                     ("moving-R%s-extrap-Co0.25", "extrapolated, Co_body 0.25", "s")):
     pts = sorted((float(r["RH"]), err(r)) for r in rows
