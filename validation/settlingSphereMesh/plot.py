@@ -29,7 +29,9 @@ STYLES = {"explicit": ("-", "o", "explicit, addedMassCoeff 2"),
           "semiImplicitExtrap": (":", "D",
                                  "semiImplicit, extrapolated flux"),
           "explicitExtrapP": ((0, (5, 1)), "v", "explicit, extrapolated flux"
-                              " and pressure, 3 PISO correctors")}
+                              " and pressure, 3 PISO correctors"),
+          "explicitExtrapBackward": ((0, (1, 1)), "*", "explicit, extrapolated"
+                                     " flux, backward")}
 
 
 def read(name):
