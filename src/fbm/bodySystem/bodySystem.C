@@ -251,6 +251,10 @@ bool Foam::fbm::bodySystem::anyMoves() const
 bool Foam::fbm::bodySystem::moveBodies()
 {
     times_.newStep();
+    if (rate_.valid())
+    {
+        rate_->beginStep();
+    }
     for (body& b : bodies_)
     {
         b.state().beginStep();

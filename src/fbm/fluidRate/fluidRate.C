@@ -18,7 +18,10 @@ License
 Foam::fbm::fluidRate::fluidRate(const fvMesh& mesh, const bool bodiesMove)
 :
     time_(mesh.time()),
-    scheme_(scheme::Euler)
+    scheme_(scheme::Euler),
+    index_(time_.timeIndex()),
+    deltaT0Last_(time_.deltaT0Value()),
+    deltaT00_(-1)
 {
     ITstream& is = mesh.ddtScheme("ddt(U)");
     const word name(is);
@@ -42,11 +45,41 @@ Foam::fbm::fluidRate::fluidRate(const fvMesh& mesh, const bool bodiesMove)
 Foam::fbm::fluidRate::fluidRate(const Time& time, const scheme s)
 :
     time_(time),
-    scheme_(s)
+    scheme_(s),
+    index_(time_.timeIndex()),
+    deltaT0Last_(time_.deltaT0Value()),
+    deltaT00_(-1)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fbm::fluidRate::beginStep()
+{
+    // At the start of a run deltaT0 is that of the start time (Time reads
+    // it from uniform/time): dt_{n-1} of the first step's last step
+    const label k = time_.timeIndex();
+    deltaT00_ = (k == index_ + 1) ? deltaT0Last_ : -1;
+    deltaT0Last_ = time_.deltaT0Value();
+    index_ = k;
+}
+
+
+Foam::scalar Foam::fbm::fluidRate::weight0() const
+{
+    // The last step (index k - 1) stepped with Euler below index 2
+    if (scheme_ == scheme::Euler || time_.timeIndex() < 3)
+    {
+        return 0;
+    }
+    if (index_ != time_.timeIndex() || deltaT00_ <= 0)
+    {
+        return weight();
+    }
+    const scalar dt0 = time_.deltaT0Value();
+    return dt0/(dt0 + deltaT00_);
+}
+
 
 Foam::scalar Foam::fbm::fluidRate::weight() const
 {

@@ -52,18 +52,27 @@ Foam::scalar Foam::fbm::rigidBodyMotion::rateWeight() const
 }
 
 
+Foam::scalar Foam::fbm::rigidBodyMotion::rateWeight0() const
+{
+    return (rate_ && addedMassCoeff_ > 0) ? rate_->weight0() : 0;
+}
+
+
 Foam::vector Foam::fbm::rigidBodyMotion::laggedRate
 (
     const vector& x,
     const vector& x00,
-    const scalar w
+    const scalar w,
+    const scalar w0
 )
 {
-    if (w == 0)
+    if (w == 0 && w0 == 0)
     {
         return x;
     }
-    return (1 + 2*w)*x - w*x00;
+    // w x^n, the part of this step's rate on the right, and the last
+    // step's rate (1 + w0) x^n - w0 x^{n-1}
+    return (1 + w + w0)*x - w0*x00;
 }
 
 
@@ -86,7 +95,7 @@ void Foam::fbm::rigidBodyMotion::translationTerms
     const scalar w = rateWeight();
     Fheld = (M - Mf)*g_ + b.force();
     Flag = addedMassCoeff_*Mf
-       *laggedRate(aLag, b.state().acceleration00(), w);
+       *laggedRate(aLag, b.state().acceleration00(), w, rateWeight0());
     Meff = M + addedMassCoeff_*Mf*(1 + w);
 }
 
@@ -120,7 +129,11 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
       & (
             T - (omega ^ (I & omega))
           + addedMassCoeff_
-           *(If & laggedRate(omegaDotLag, b.state().angularAcceleration00(), w))
+           *(If & laggedRate
+            (
+                omegaDotLag, b.state().angularAcceleration00(), w,
+                rateWeight0()
+            ))
         )
     );
     // 2D: rotation about the empty direction only
@@ -170,7 +183,11 @@ Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
     }
     const vector lag
     (
-        laggedRate(omegaDotLag, b.state().angularAcceleration00(), w)
+        laggedRate
+            (
+                omegaDotLag, b.state().angularAcceleration00(), w,
+                rateWeight0()
+            )
     );
     return
         (T + c*((I & lag) + (1 + w)*(omega ^ (I & omega))))
