@@ -56,8 +56,9 @@ Foam::fbm::fluidRate::fluidRate(const Time& time, const scheme s)
 
 void Foam::fbm::fluidRate::beginStep()
 {
-    // At the start of a run deltaT0 is that of the start time (Time reads
-    // it from uniform/time): dt_{n-1} of the first step's last step
+    // deltaT0 at the last step's index is the step before the last one;
+    // in the first step of a run, deltaT0 of the start time (Time reads
+    // it from uniform/time at a restart), kept by the constructor
     const label k = time_.timeIndex();
     deltaT00_ = (k == index_ + 1) ? deltaT0Last_ : -1;
     deltaT0Last_ = time_.deltaT0Value();

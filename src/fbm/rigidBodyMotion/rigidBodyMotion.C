@@ -129,11 +129,14 @@ Foam::vector Foam::fbm::rigidBodyMotion::angularAcceleration
       & (
             T - (omega ^ (I & omega))
           + addedMassCoeff_
-           *(If & laggedRate
-            (
-                omegaDotLag, b.state().angularAcceleration00(), w,
-                rateWeight0()
-            ))
+           *(
+                If
+              & laggedRate
+                (
+                    omegaDotLag, b.state().angularAcceleration00(), w,
+                    rateWeight0()
+                )
+            )
         )
     );
     // 2D: rotation about the empty direction only
@@ -184,10 +187,9 @@ Foam::vector Foam::fbm::rigidBodyMotion::splitTorque
     const vector lag
     (
         laggedRate
-            (
-                omegaDotLag, b.state().angularAcceleration00(), w,
-                rateWeight0()
-            )
+        (
+            omegaDotLag, b.state().angularAcceleration00(), w, rateWeight0()
+        )
     );
     return
         (T + c*((I & lag) + (1 + w)*(omega ^ (I & omega))))
