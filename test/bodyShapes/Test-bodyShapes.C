@@ -24,10 +24,15 @@ Description
       |d| no larger than the distance to any of a dense set of surface
       points (so the closest point is the global one);
     - the bounding box of the rotated shape;
+    - fbm::planarArea's exact areas (disk in a polygon, polygon in a box)
+      against closed forms;
     - the solid fraction: sum of boxFraction h^2 (h^3) over a grid of boxes
       of size h covering the rotated shape (grid offset from the centre)
       against the exact area (volume), at four sizes h; the error is
-      printed for each and checked against the bound stated in the test;
+      printed for each and checked: round-off for the ellipse and polygon
+      (exact fractions), the bound stated in the test for the sampled 3D
+      shapes; the ellipse's and polygon's cut cells one by one against the
+      sampling at depth 10;
     - bad polygons (non-convex, clockwise, self-intersecting, too few
       vertices): a FatalIOError naming the keyword and the body.
 
@@ -37,6 +42,7 @@ Description
 #include "ellipse.H"
 #include "ellipsoid.H"
 #include "polygon.H"
+#include "planarArea.H"
 #include "Random.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -89,6 +95,49 @@ scalar fractionError
         }
     }
     return (sum - exact)/exact;
+}
+
+
+// An exact fraction against the adaptive sampling of the base class at
+// depth 10 (leaves delta = h/1024), cell by cell over the cut boxes of a
+// grid of size h: planar leaves on a curve of curvature kappa lose at most
+// about delta^2 (delta kappa) each along the 4 h/delta cut leaves, a corner
+// at most delta^2: |difference| <= 4 kappa h (delta/h)^2 + 3 (delta/h)^2
+void cellsAgainstSampling
+(
+    const word& name,
+    const fbm::bodyShape& s,
+    const scalar h,
+    const scalar kappa
+)
+{
+    const vector ext(s.halfExtent());
+    const vector offset(0.31*h, 0.17*h, 0);
+    const label nx = label(std::ceil(ext.x()/h)) + 2;
+    const label ny = label(std::ceil(ext.y()/h)) + 2;
+    scalar worst = 0;
+    label nCut = 0;
+    for (label i = -nx; i < nx; ++i)
+    {
+        for (label j = -ny; j < ny; ++j)
+        {
+            const point lo(i*h + offset.x(), j*h + offset.y(), -0.5);
+            const boundBox bb(lo, lo + vector(h, h, 1));
+            const scalar exact = s.boxFraction(bb, 0);
+            const scalar sampled = s.sampleFraction(bb, 10);
+            if ((exact > 0 && exact < 1) || (sampled > 0 && sampled < 1))
+            {
+                ++nCut;
+                worst = max(worst, mag(exact - sampled));
+            }
+        }
+    }
+    const scalar tol = (4*kappa*h + 3)/sqr(1024.0);
+    Info<< "    " << name << ": " << nCut << " cut cells at h = " << h
+        << ", largest difference to the sampling at depth 10 " << worst
+        << " (bound " << tol << ")" << nl;
+    fbmTest::check(name + ": cut cells found", scalar(nCut > 10), 1, 0);
+    fbmTest::check(name + ": cells against sampling", worst, 0, tol);
 }
 
 
@@ -212,6 +261,96 @@ int main(int argc, char *argv[])
 
     if (twoD)
     {
+        // ---- fbm::planarArea by hand ----
+        {
+            typedef fbm::planarArea pa;
+            auto square = [](const scalar x0, const scalar y0, const scalar s)
+            {
+                return List<vector2D>
+                ({
+                    vector2D(x0, y0), vector2D(x0 + s, y0),
+                    vector2D(x0 + s, y0 + s), vector2D(x0, y0 + s)
+                });
+            };
+            const scalar R = 0.7;
+            fbmTest::check
+            (
+                "planarArea: disk inside a square", 
+                pa::diskPolygon(square(-1, -1, 2), R), pi*R*R, 1e-15
+            );
+            fbmTest::check
+            (
+                "planarArea: square inside the disk",
+                pa::diskPolygon(square(-0.4, -0.4, 0.8), R), 0.64, 1e-15
+            );
+            fbmTest::check
+            (
+                "planarArea: square apart (touching at (R, 0))",
+                pa::diskPolygon(square(R, -0.5, 1), R), 0, 0
+            );
+            fbmTest::check
+            (
+                "planarArea: a quadrant",
+                pa::diskPolygon(square(0, 0, 1), R), pi*R*R/4, 1e-15
+            );
+            // The segment beyond x = d: R^2 acos(d/R) - d sqrt(R^2 - d^2)
+            const scalar d = 0.3;
+            fbmTest::check
+            (
+                "planarArea: a circular segment",
+                pa::diskPolygon(square(d, -1, 2), R),
+                R*R*Foam::acos(d/R) - d*Foam::sqrt(R*R - d*d), 1e-15
+            );
+            // The same across the corners of a bigger square: the disk
+            // minus the segment beyond x = -d, and clockwise a negative
+            const List<vector2D> sq(square(-d, -1, 2));
+            fbmTest::check
+            (
+                "planarArea: disk less a segment",
+                pa::diskPolygon(sq, R),
+                pi*R*R - (R*R*Foam::acos(d/R) - d*Foam::sqrt(R*R - d*d)),
+                1e-15
+            );
+            const List<vector2D> tri
+            ({vector2D(-1, -1), vector2D(3, -1), vector2D(-1, 3)});
+            fbmTest::check
+            (
+                "planarArea: triangle clipped to the unit square",
+                pa::boxPolygon(tri, vector2D(0, 0), vector2D(1, 1)), 1, 1e-15
+            );
+            fbmTest::check
+            (
+                "planarArea: triangle clipped to a box across its edge",
+                pa::boxPolygon(tri, vector2D(0, 0), vector2D(2, 2)), 2,
+                1e-15
+            );
+            fbmTest::check
+            (
+                "planarArea: clockwise triangle clipped",
+                pa::boxPolygon
+                (
+                    List<vector2D>({tri[0], tri[2], tri[1]}),
+                    vector2D(0, 0), vector2D(2, 2)
+                ),
+                2, 1e-15
+            );
+            // Across the bottom edge and the hypotenuse: [0.5, 2.5] x
+            // [-2, 0] keeps the trapezoid under x + y = 2 above y = -1,
+            // (2.5 - 0.5) x 1 less the corner triangle beyond x + y = 2
+            // (x from 2 to 2.5 at y = 0, 1/8)
+            fbmTest::check
+            (
+                "planarArea: triangle clipped across two edges",
+                pa::boxPolygon(tri, vector2D(0.5, -2), vector2D(2.5, 0)),
+                2 - 0.125, 1e-15
+            );
+            fbmTest::check
+            (
+                "planarArea: box apart from the triangle",
+                pa::boxPolygon(tri, vector2D(2, 2), vector2D(3, 3)), 0, 0
+            );
+        }
+
         // ---- Ellipse a = 0.2, b = 0.1 ----
         dictionary dict;
         dict.add("type", "ellipse");
@@ -295,23 +434,22 @@ int main(int argc, char *argv[])
             checkDistances("ellipse", e, pts, a, true, 400);
         }
 
-        // Solid fraction against the grid size (nSubdivision 4)
+        // Solid fraction against the grid size: exact (the unit disk's
+        // share of the cell mapped to the disk's frame), to round-off at
+        // every h
         Info<< nl << "ellipse (a/b = 2, 30 degrees): solid fraction" << nl;
-        scalar errPrev = 0;
         for (const scalar h : {0.1, 0.05, 0.025, 0.0125})
         {
             const scalar err = fractionError(e, h, 4, true, pi*a*b);
-            convergence("ellipse", err, errPrev);
             Info<< "    b/h = " << b/h << "  relative area error " << err
                 << nl;
-            // Bound: planar leaves of size delta = h/16 on a curve of
-            // smallest radius of curvature b^2/a: (delta a/b^2)^2
             fbmTest::check
             (
-                "ellipse: area error at b/h = " + std::to_string(b/h),
-                err, 0, sqr(h/16*a/(b*b))
+                "ellipse: area exact at b/h = " + std::to_string(b/h),
+                err, 0, 1e-13
             );
         }
+        cellsAgainstSampling("ellipse", e, 0.025, a/(b*b));
 
         // ---- Polygons ----
         {
@@ -386,21 +524,18 @@ int main(int argc, char *argv[])
             checkDistances("triangle", t, pts, 0.2, true, 400, false);
 
             Info<< nl << "triangle (turned by 1 rad): solid fraction" << nl;
-            scalar errPrev = 0;
             for (const scalar h : {0.1, 0.05, 0.025, 0.0125})
             {
                 const scalar err = fractionError(t, h, 4, true, A);
-                convergence("triangle", err, errPrev);
                 Info<< "    q/h = " << q/h << "  relative area error " << err
                     << nl;
-                // Bound: a straight edge is exact; the corners' leaves
-                // (size delta = h/16) lose at most delta^2 each
                 fbmTest::check
                 (
-                    "triangle: area error at q/h = " + std::to_string(q/h),
-                    err, 0, 3*sqr(h/16)/A
+                    "triangle: area exact at q/h = " + std::to_string(q/h),
+                    err, 0, 1e-13
                 );
             }
+            cellsAgainstSampling("triangle", t, 0.025, 0);
         }
         {
             // Rectangle 0.3 x 0.1, not at the origin: Izz = V (w^2 + h^2)/12

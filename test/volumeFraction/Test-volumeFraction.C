@@ -15,9 +15,9 @@ Description
     The solid volume fraction summed over the cells, sum(alpha V), against
     the shape's exact volume (pi R^2 depth for a circle, 4/3 pi R^3 for a
     sphere), and alpha within [0, 1]. The relative tolerance is an option
-    (the runner gives a tighter one on finer meshes). For a circle, whose
-    fraction is exact, also each cell against the adaptive sampling of
-    fbm::bodyShape at depth 10.
+    (the runner gives a tighter one on finer meshes). For a circle, an
+    ellipse and a polygon, whose fractions are exact, also each cell
+    against the adaptive sampling of fbm::bodyShape at depth 10.
 
 \*---------------------------------------------------------------------------*/
 
@@ -59,10 +59,12 @@ int main(int argc, char *argv[])
         fbmTest::check("min alpha >= 0", min(aMin, scalar(0)), 0, 0);
         fbmTest::check("max alpha <= 1", max(aMax, scalar(1)), 1, 0);
 
-        // A circle's fraction is exact per cell: against the adaptive
-        // sampling of the base class at depth 10 (leaf h/1024, planar
-        // leaves: error about (h/1024)^2/(R h) per cell)
-        if (b.shape().type() == "circle")
+        // A circle's, an ellipse's and a polygon's fraction is exact per
+        // cell: against the adaptive sampling of the base class at depth 10
+        // (leaf h/1024, planar leaves: error about (h/1024)^2 kappa h per
+        // cell on a curve of curvature kappa, (h/1024)^2 at a corner)
+        const word type(b.shape().type());
+        if (type == "circle" || type == "ellipse" || type == "polygon")
         {
             scalar worst = 0;
             forAll(b.cells(), i)
@@ -85,7 +87,7 @@ int main(int argc, char *argv[])
             }
             fbmTest::check
             (
-                "circle: largest cell difference to sampling", worst, 0, 1e-5
+                type + ": largest cell difference to sampling", worst, 0, 1e-5
             );
         }
 

@@ -14,6 +14,7 @@ License
 #include "polyMesh.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
+#include "planarArea.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -94,58 +95,6 @@ void Foam::fbm::bodyShapes::circle::setAxes
 }
 
 
-Foam::scalar Foam::fbm::bodyShapes::circle::triangleArea
-(
-    const vector2D& a,
-    const vector2D& b
-) const
-{
-    const scalar R2 = sqr(radius_);
-
-    // Points where the edge a + t (b - a), 0 < t < 1, crosses the circle
-    const vector2D d(b - a);
-    const scalar A = d & d;
-    if (A < VSMALL*R2)
-    {
-        return 0;
-    }
-    const scalar B = a & d;
-    const scalar C = (a & a) - R2;
-    const scalar disc = sqr(B) - A*C;
-
-    FixedList<vector2D, 4> p;
-    label n = 0;
-    p[n++] = a;
-    if (disc > 0)
-    {
-        const scalar root = std::sqrt(disc);
-        const scalar t1 = (-B - root)/A;
-        const scalar t2 = (-B + root)/A;
-        if (t1 > 0 && t1 < 1) p[n++] = a + t1*d;
-        if (t2 > 0 && t2 < 1) p[n++] = a + t2*d;
-    }
-    p[n++] = b;
-
-    // Inside the disk a triangle, outside a sector
-    scalar area = 0;
-    for (label i = 0; i < n - 1; ++i)
-    {
-        const vector2D& q = p[i];
-        const vector2D& r = p[i + 1];
-        const scalar cross = q.x()*r.y() - q.y()*r.x();
-        if (magSqr(0.5*(q + r)) < R2)
-        {
-            area += 0.5*cross;
-        }
-        else
-        {
-            area += 0.5*R2*std::atan2(cross, q & r);
-        }
-    }
-    return area;
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::fbm::bodyShapes::circle::signedDistance
@@ -202,7 +151,7 @@ Foam::scalar Foam::fbm::bodyShapes::circle::boxFraction
     scalar area = 0;
     for (label k = 0; k < 4; ++k)
     {
-        area += triangleArea(c[k], c[(k + 1) % 4]);
+        area += planarArea::diskTriangle(c[k], c[(k + 1) % 4], radius_);
     }
 
     return max(scalar(0), min(scalar(1), area/boxArea));

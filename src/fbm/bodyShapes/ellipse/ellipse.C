@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "ellipse.H"
+#include "planarArea.H"
 #include "ellipsoid.H"
 #include "polyMesh.H"
 #include "addToRunTimeSelectionTable.H"
@@ -116,6 +117,46 @@ Foam::vector Foam::fbm::bodyShapes::ellipse::halfExtent() const
         if (solutionD_[d] < 0) h[d] = GREAT;
     }
     return h;
+}
+
+
+Foam::scalar Foam::fbm::bodyShapes::ellipse::boxFraction
+(
+    const boundBox& bb,
+    const label
+) const
+{
+    const direction i = axes_[0], j = axes_[1];
+    const scalar x[2] = {bb.min()[i], bb.max()[i]};
+    const scalar y[2] = {bb.min()[j], bb.max()[j]};
+    if (!(x[1] > x[0] && y[1] > y[0]))
+    {
+        return 0;
+    }
+
+    // The rectangle's corners counter-clockwise, mapped to the frame where
+    // the ellipse is the unit disk
+    const label cx[4] = {0, 1, 1, 0}, cy[4] = {0, 0, 1, 1};
+    vector2D corners[4];
+    UList<vector2D> p(corners, 4);
+    for (label k = 0; k < 4; ++k)
+    {
+        vector r(Zero);
+        r[i] = x[cx[k]];
+        r[j] = y[cy[k]];
+        const vector rb(toBody(r));
+        p[k] = vector2D(rb[i]/a_, rb[j]/b_);
+    }
+
+    // A rotation that turns the plane over reverses the corners' order
+    scalar A = planarArea::area(p);
+    if (A < 0)
+    {
+        Swap(p[1], p[3]);
+        A = -A;
+    }
+
+    return max(scalar(0), min(scalar(1), planarArea::diskPolygon(p, 1)/A));
 }
 
 

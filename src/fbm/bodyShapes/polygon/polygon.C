@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polygon.H"
+#include "planarArea.H"
 #include "polyMesh.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
@@ -253,6 +254,78 @@ Foam::vector Foam::fbm::bodyShapes::polygon::halfExtent() const
         if (solutionD_[d] < 0) h[d] = GREAT;
     }
     return h;
+}
+
+
+Foam::scalar Foam::fbm::bodyShapes::polygon::boxFraction
+(
+    const boundBox& bb,
+    const label
+) const
+{
+    const direction i = axes_[0], j = axes_[1];
+    const vector2D lo(bb.min()[i], bb.min()[j]);
+    const vector2D hi(bb.max()[i], bb.max()[j]);
+    const scalar boxArea = (hi.x() - lo.x())*(hi.y() - lo.y());
+    if (!(hi.x() > lo.x() && hi.y() > lo.y()))
+    {
+        return 0;
+    }
+
+    // The vertices in the lab frame (relative to the centre)
+    const label n = vertices_.size();
+    List<vector2D> p(n);
+    vector2D pMin(vector2D::uniform(GREAT)), pMax(-pMin);
+    for (label k = 0; k < n; ++k)
+    {
+        vector pb(Zero);
+        pb[i] = vertices_[k].x();
+        pb[j] = vertices_[k].y();
+        const vector pl(toLab(pb));
+        p[k] = vector2D(pl[i], pl[j]);
+        pMin = min(pMin, p[k]);
+        pMax = max(pMax, p[k]);
+    }
+
+    // Apart from the polygon's bounding box: 0
+    if
+    (
+        pMax.x() <= lo.x() || pMin.x() >= hi.x()
+     || pMax.y() <= lo.y() || pMin.y() >= hi.y()
+    )
+    {
+        return 0;
+    }
+
+    // Every corner of the box on the inner side of every edge: 1 (the
+    // sign of the polygon's area gives the inner side)
+    const scalar orient = planarArea::area(p) < 0 ? -1 : 1;
+    bool inside = true;
+    for (label k = 0; k < n && inside; ++k)
+    {
+        const vector2D& a = p[k];
+        const vector2D e(p[(k + 1) % n] - a);
+        for (label c = 0; c < 4 && inside; ++c)
+        {
+            const vector2D q
+            (
+                (c == 1 || c == 2) ? hi.x() : lo.x(),
+                c < 2 ? lo.y() : hi.y()
+            );
+            const vector2D r(q - a);
+            inside = orient*(e.x()*r.y() - e.y()*r.x()) >= 0;
+        }
+    }
+    if (inside)
+    {
+        return 1;
+    }
+
+    return max
+    (
+        scalar(0),
+        min(scalar(1), planarArea::boxPolygon(p, lo, hi)/boxArea)
+    );
 }
 
 
