@@ -170,6 +170,84 @@ Foam::vector Foam::fbm::bodyShapes::ellipsoid::halfExtent() const
 }
 
 
+Foam::scalar Foam::fbm::bodyShapes::ellipsoid::mappedFraction
+(
+    const vector& m,
+    const tensor& E,
+    const label nSubdivision
+)
+{
+    const scalar mm = mag(m);
+    const scalar d = mm - 1;
+    const scalar reach = mag(E.x()) + mag(E.y()) + mag(E.z());
+
+    if (d <= -reach)
+    {
+        return 1;
+    }
+    if (d >= reach)
+    {
+        return 0;
+    }
+
+    if (nSubdivision <= 0)
+    {
+        // Leaf: the share behind the tangent plane at the centre
+        if (mm < VSMALL)
+        {
+            return 1;
+        }
+        const vector n(m/mm);
+        const scalar width =
+            2*(mag(n & E.x()) + mag(n & E.y()) + mag(n & E.z()));
+        if (width < VSMALL)
+        {
+            return d < 0 ? 1 : 0;
+        }
+        return max(scalar(0), min(scalar(1), 0.5 - d/width));
+    }
+
+    const tensor Eh(0.5*E);
+    scalar sum = 0;
+    for (label child = 0; child < 8; ++child)
+    {
+        const vector mc
+        (
+            m
+          + ((child & 1) ? Eh.x() : -Eh.x())
+          + ((child & 2) ? Eh.y() : -Eh.y())
+          + ((child & 4) ? Eh.z() : -Eh.z())
+        );
+        sum += mappedFraction(mc, Eh, nSubdivision - 1);
+    }
+    return sum/8;
+}
+
+
+Foam::scalar Foam::fbm::bodyShapes::ellipsoid::boxFraction
+(
+    const boundBox& bb,
+    const label nSubdivision
+) const
+{
+    // x' = S Q^T x, S = diag(1/a, 1/b, 1/c): the box's centre and its
+    // half edges (the rows of E: S Q^T e_i h_i)
+    const tensor SQt
+    (
+        tensor(1/e_.x(), 0, 0, 0, 1/e_.y(), 0, 0, 0, 1/e_.z())
+      & Q_.T()
+    );
+    const vector h(0.5*bb.span());
+    const tensor E
+    (
+        SQt.cx()*h.x(),
+        SQt.cy()*h.y(),
+        SQt.cz()*h.z()
+    );
+    return mappedFraction(SQt & bb.centre(), E, nSubdivision);
+}
+
+
 Foam::scalar Foam::fbm::bodyShapes::ellipsoid::volume() const
 {
     return 4.0/3.0*constant::mathematical::pi*e_.x()*e_.y()*e_.z();
