@@ -321,11 +321,17 @@ with open("history.csv", "w", newline="") as f:
 with open("comparison.csv", "w", newline="") as f:
     wr = csv.writer(f)
     wr.writerow(["run", "t", "x", "y", "U", "theta"])
-    for nuText in sorted({r.split("-")[1] for r in hist
+    # (a body-fitted run kept from a previous analysis counts with its
+    # t_sound and t_end from results.csv, its rows with cmpOld)
+    for nuText in sorted({r.split("-")[1] for r in list(hist) + list(kept)
                           if r.startswith("bodyFitted-")}):
         group = [r for r in hist if r.split("-")[1] == nuText
                  and not r.endswith("-explicit")]
-        tMax = min(min(hist[r][5], hist[r][0][-1]) for r in group)
+        keptGroup = [r for r in kept if r.split("-")[1] == nuText
+                     and not r.endswith("-explicit")]
+        tMax = min([min(hist[r][5], hist[r][0][-1]) for r in group]
+                   + [min(float(kept[r]["t_sound"]), float(kept[r]["t_end"]))
+                      for r in keptGroup])
         for run in group:
             t, x, y, uy, theta, ts = hist[run]
             for tt in np.arange(0.05, tMax + 1e-9, 0.05):
