@@ -47,10 +47,15 @@ Foam::fbm::bodyShapes::polygon::polygon
     Suu_(0),
     Svv_(0),
     Suv_(0),
-    radius_(0)
+    radius_(0),
+    labVertices_(),
+    labMin_(Zero),
+    labMax_(Zero),
+    labOrient_(1)
 {
     checkDimension(mesh, dict, 2, axes_);
     setVertices(dict.get<List<vector2D>>("vertices"), dict);
+    setLabVertices();
 }
 
 
@@ -257,6 +262,33 @@ Foam::vector Foam::fbm::bodyShapes::polygon::halfExtent() const
 }
 
 
+void Foam::fbm::bodyShapes::polygon::setLabVertices()
+{
+    const direction i = axes_[0], j = axes_[1];
+    labVertices_.resize(vertices_.size());
+    labMin_ = vector2D::uniform(GREAT);
+    labMax_ = -labMin_;
+    forAll(vertices_, k)
+    {
+        vector pb(Zero);
+        pb[i] = vertices_[k].x();
+        pb[j] = vertices_[k].y();
+        const vector pl(toLab(pb));
+        labVertices_[k] = vector2D(pl[i], pl[j]);
+        labMin_ = min(labMin_, labVertices_[k]);
+        labMax_ = max(labMax_, labVertices_[k]);
+    }
+    labOrient_ = planarArea::area(labVertices_) < 0 ? -1 : 1;
+}
+
+
+void Foam::fbm::bodyShapes::polygon::setOrientation(const tensor& Q)
+{
+    bodyShape::setOrientation(Q);
+    setLabVertices();
+}
+
+
 Foam::scalar Foam::fbm::bodyShapes::polygon::boxFraction
 (
     const boundBox& bb,
@@ -272,34 +304,19 @@ Foam::scalar Foam::fbm::bodyShapes::polygon::boxFraction
         return 0;
     }
 
-    // The vertices in the lab frame (relative to the centre)
-    const label n = vertices_.size();
-    List<vector2D> p(n);
-    vector2D pMin(vector2D::uniform(GREAT)), pMax(-pMin);
-    for (label k = 0; k < n; ++k)
-    {
-        vector pb(Zero);
-        pb[i] = vertices_[k].x();
-        pb[j] = vertices_[k].y();
-        const vector pl(toLab(pb));
-        p[k] = vector2D(pl[i], pl[j]);
-        pMin = min(pMin, p[k]);
-        pMax = max(pMax, p[k]);
-    }
-
-    // Apart from the polygon's bounding box: 0
+    // Apart from the turned polygon's bounding box: 0
     if
     (
-        pMax.x() <= lo.x() || pMin.x() >= hi.x()
-     || pMax.y() <= lo.y() || pMin.y() >= hi.y()
+        labMax_.x() <= lo.x() || labMin_.x() >= hi.x()
+     || labMax_.y() <= lo.y() || labMin_.y() >= hi.y()
     )
     {
         return 0;
     }
 
-    // Every corner of the box on the inner side of every edge: 1 (the
-    // sign of the polygon's area gives the inner side)
-    const scalar orient = planarArea::area(p) < 0 ? -1 : 1;
+    // Every corner of the box on the inner side of every edge: 1
+    const List<vector2D>& p = labVertices_;
+    const label n = p.size();
     bool inside = true;
     for (label k = 0; k < n && inside; ++k)
     {
@@ -313,7 +330,7 @@ Foam::scalar Foam::fbm::bodyShapes::polygon::boxFraction
                 c < 2 ? lo.y() : hi.y()
             );
             const vector2D r(q - a);
-            inside = orient*(e.x()*r.y() - e.y()*r.x()) >= 0;
+            inside = labOrient_*(e.x()*r.y() - e.y()*r.x()) >= 0;
         }
     }
     if (inside)
