@@ -254,6 +254,9 @@ void checkRandom
     scalar maxGapErr = 0, maxNormalErr = 0, maxWitnessErr = 0;
     scalar maxGapErrO = 0, maxNormalErrO = 0;
     label maxIter = 0, nOverlap = 0, nConverged = 0;
+    label iterCold = 0, iterWarm = 0, nConvergedWarm = 0, nApartWarm = 0;
+    label iterColdO = 0, iterWarmO = 0;
+    scalar maxWarmErr = 0;
     for (label k = 0; k < nPairs; ++k)
     {
         const tensor QA(randomRotation(rng, twoD));
@@ -271,6 +274,52 @@ void checkRandom
         );
         vector nRef;
         const scalar gRef = reference(A, QA, XA, B, QB, XB, twoD, nRef);
+
+        // Warm starts: from the normal of a nearby configuration (B moved
+        // by 1e-3 (RA + RB), as in the next collision sub-step) and from
+        // the worst direction (the opposite of the answer): the same
+        // answer within the tolerances
+        vector du(rng.sample01<vector>() - 0.5*vector::one);
+        if (twoD) du.z() = 0;
+        const fbm::convexDistance::result rNear
+        (
+            cd.distance(A, QA, XA, B, QB, XB + 1e-3*(RA + RB)*du/mag(du))
+        );
+        const fbm::convexDistance::result rWarm
+        (
+            cd.distance(A, QA, XA, B, QB, XB, -rNear.normal)
+        );
+        const fbm::convexDistance::result rWrong
+        (
+            cd.distance(A, QA, XA, B, QB, XB, r.normal)
+        );
+        if (!r.overlap && !rNear.overlap)
+        {
+            iterCold += r.iterations;
+            iterWarm += rWarm.iterations;
+            ++nApartWarm;
+        }
+        else
+        {
+            iterColdO += r.iterations;
+            iterWarmO += rWarm.iterations;
+        }
+        for (const auto* rh : {&rWarm, &rWrong})
+        {
+            const scalar tolGap = rh->overlap ? 2*deltaEPA : 2*delta;
+            const scalar tolN =
+                10*Foam::sqrt((rh->overlap ? deltaEPA : delta)/min(RA, RB));
+            maxWarmErr = max
+            (
+                maxWarmErr,
+                max
+                (
+                    mag(rh->gap - gRef)/(tolGap + 1e-14),
+                    mag(rh->normal - nRef)/tolN
+                )
+            );
+            if (rh->converged) ++nConvergedWarm;
+        }
 
         if (r.overlap)
         {
@@ -315,6 +364,28 @@ void checkRandom
         10*Foam::sqrt(delta*min(RA, RB))
     );
     fbmTest::check(name + ": all converged", nConverged, nPairs, 0);
+    Info<< "    " << name << ": warm start from a nearby normal, pairs"
+        << " apart: " << scalar(iterWarm)/max(nApartWarm, 1)
+        << " iterations per pair against "
+        << scalar(iterCold)/max(nApartWarm, 1) << " from the centres;"
+        << " overlapping: " << scalar(iterWarmO)/max(nPairs - nApartWarm, 1)
+        << " against " << scalar(iterColdO)/max(nPairs - nApartWarm, 1)
+        << "; error of the warm and the wrong-way starts in units of the"
+        << " tolerances " << maxWarmErr << nl;
+    fbmTest::check
+    (
+        name + ": warm and wrong-way starts = reference", maxWarmErr, 0, 1
+    );
+    fbmTest::check
+    (
+        name + ": warm and wrong-way starts converged", nConvergedWarm,
+        2*nPairs, 0
+    );
+    fbmTest::check
+    (
+        name + ": warm start takes fewer iterations (pairs apart)",
+        scalar(iterWarm < iterCold), 1, 0
+    );
     fbmTest::check(name + ": some overlap", scalar(nOverlap > nPairs/10), 1, 0);
     fbmTest::check
     (

@@ -532,7 +532,8 @@ Foam::fbm::convexDistance::convexDistance
 Foam::fbm::convexDistance::result Foam::fbm::convexDistance::distance
 (
     const bodyShape& sA, const tensor& QA, const point& XA,
-    const bodyShape& sB, const tensor& QB, const point& XB
+    const bodyShape& sB, const tensor& QB, const point& XB,
+    const vector& v0
 ) const
 {
     const vector& e = planeNormal_;
@@ -558,8 +559,18 @@ Foam::fbm::convexDistance::result Foam::fbm::convexDistance::distance
     scalar lambda[4];
     label n = 0;
 
-    // Start from the centres' difference, a point of C
-    vector v(inPlane(XA - XB));
+    // Start from the given direction or the centres' difference, a point
+    // of C (only the first support query uses v before the simplex has a
+    // point, so its length does not matter)
+    vector v(inPlane(v0));
+    if (magSqr(v) <= VSMALL*VSMALL)
+    {
+        v = inPlane(XA - XB);
+    }
+    else
+    {
+        v *= mag(XA - XB)/mag(v);
+    }
     if (magSqr(v) <= sqr(delta))
     {
         v = inPlane(vector(1, 0, 0));

@@ -151,6 +151,14 @@ Foam::fbm::particleCollisions::particleCollisions
     search_(),
     planeMask_(planeMask(mesh)),
     narrow_(vector::one - planeMask_),
+    warmStart_(),
+    useWarmStart_(dict.getOrDefault<bool>("narrowPhaseWarmStart", true)),
+    inMove_(false),
+    nNarrow_(0),
+    nNarrowIter_(0),
+    invInertia_(bodies.size(), Zero),
+    invInertiaStamp_(bodies.size(), -1),
+    nForceCalls_(0),
     round_(bodies.size(), true),
     allRound_(true),
     subRotates_(bodies.size(), false),
@@ -179,7 +187,8 @@ Foam::fbm::particleCollisions::particleCollisions
     if (!allRound_)
     {
         Info<< "fbm: collisions: non-round bodies: closest points by"
-            << " GJK/EPA on the support functions (convexDistance)" << nl;
+            << " GJK/EPA on the support functions (convexDistance),"
+            << " narrowPhaseWarmStart " << Switch(useWarmStart_) << nl;
     }
 
     // Stiffest contact: each pair of (radius, mass) classes with its
@@ -350,6 +359,12 @@ void Foam::fbm::particleCollisions::move
         }
     };
 
+    // The narrow phase's warm start holds within this step's sub-steps
+    warmStart_.clear();
+    inMove_ = useWarmStart_;
+    nNarrow_ = 0;
+    nNarrowIter_ = 0;
+
     List<vector> F(bodies.size(), Zero);
     List<vector>& T = torque_;
     arrayForces(bodies, F, T, 0);
@@ -398,6 +413,14 @@ void Foam::fbm::particleCollisions::move
 
         kick(F);
         kickRotation(T);
+    }
+    inMove_ = false;
+    warmStart_.clear();
+    if (nNarrow_ > 0)
+    {
+        Info<< "fbm: collisions: narrow phase: " << nNarrow_
+            << " queries of " << nNarrowIter_/nNarrow_
+            << " iterations" << nl;
     }
 
     forAll(bodies, i)

@@ -27,7 +27,7 @@ Foam::scalar Foam::fbm::particleCollisions::inverseMass
     const label i,
     const vector& r,
     const vector& n
-) const
+)
 {
     scalar w = 0;
     if (translates_[i] && mass_[i] < GREAT)
@@ -36,8 +36,13 @@ Foam::scalar Foam::fbm::particleCollisions::inverseMass
     }
     if (b.rotates())
     {
+        if (invInertiaStamp_[i] != nForceCalls_)
+        {
+            invInertia_[i] = inv(b.inertia());
+            invInertiaStamp_[i] = nForceCalls_;
+        }
         const vector rn(r ^ n);
-        w += rn & (inv(b.inertia()) & rn);
+        w += rn & (invInertia_[i] & rn);
     }
     return w;
 }
@@ -87,14 +92,30 @@ void Foam::fbm::particleCollisions::shapePair
     const body& bi = bodies[i];
     const body& bj = bodies[j];
 
+    // Within a move(), GJK starts from the pair's last normal if the pair
+    // was apart (from an overlap it takes more iterations than from the
+    // centres: test convexDistance)
+    auto hint = inMove_ ? warmStart_.find(labelPair(i, j)) : warmStart_.end();
     const convexDistance::result c
     (
         narrow_.distance
         (
             bi.shape(), bi.state().Q(), X_[i],
-            bj.shape(), bj.state().Q(), X_[j]
+            bj.shape(), bj.state().Q(), X_[j],
+            hint.found() ? *hint : vector::zero
         )
     );
+    ++nNarrow_;
+    nNarrowIter_ += c.iterations;
+    const vector next(c.overlap ? vector::zero : vector(-c.normal));
+    if (hint.found())
+    {
+        *hint = next;
+    }
+    else if (inMove_)
+    {
+        warmStart_.insert(labelPair(i, j), next);
+    }
     minPairGap_ = min(minPairGap_, c.gap);
     if (c.gap > law.range())
     {
@@ -284,6 +305,14 @@ void Foam::fbm::particleCollisions::arrayForces
     {
         friction_->beginForces(dtHistory);
     }
+    // A new orientation of the bodies: their inverse inertia is
+    // recomputed at their first contact
+    if (nForceCalls_ == labelMax)
+    {
+        nForceCalls_ = 0;
+        invInertiaStamp_ = -1;
+    }
+    ++nForceCalls_;
 
     F.setSize(bodies.size());
     F = Zero;
