@@ -23,7 +23,9 @@ Description
       image point, the wall force of each branch through
       particleCollisions (times the mesh depth in 2D);
     - grid search against all pairs: 500 random particles in 3D, in a
-      plane, and a sparse set; one particle: no pairs;
+      plane, and a sparse set; polydisperse sets with large particles; a
+      large particle beside centres that spread by round-off in one
+      direction; one particle: no pairs;
     - a sub-cycled head-on collision of two disks without fluid:
       momentum conserved, the largest overlap below 5 % of R1 + R2
       (energy estimate 2.5 %), rebound speed within 1 % of the impact
@@ -319,6 +321,33 @@ int main(int argc, char *argv[])
             Xp[i].z() = 0.05;
         }
         checkSearch("search polydisperse 2D, 506", Xp, Rp, 0.01);
+
+        // A large particle beside a small one whose centres differ by
+        // round-off in one direction (a cell width of 1e-11 there): the
+        // large one's reach of many cell widths (before 2026-12-05 it
+        // overflowed a label: a floating-point exception, or the pair
+        // missed where exceptions are off)
+        {
+            fbm::contactSearch search;
+            const pointField Xl
+            ({
+                point(0.3, 0.17, 0.5 + 1e-11), point(0.5, 0.05, 0.5),
+                point(0.9, 0.5, 0.5)
+            });
+            const scalarField Rl({0.15, 0.68, 0.1});
+            search.search(Xl, Rl, 0.02);
+            const List<labelPair> all
+            (
+                sorted(fbm::contactSearch::allPairs(Xl, Rl, 0.02))
+            );
+            const List<labelPair> grid(sorted(search.pairs()));
+            fbmTest::check
+            (
+                "search: large particle, centres spread by 1e-11 in z:"
+                " grid pairs = all pairs",
+                scalar(grid == all && all.size() == 2), 1, 0
+            );
+        }
 
         fbm::contactSearch search;
         search.search(pointField(1, Zero), scalarField(1, 1.0), 1.0);

@@ -183,21 +183,31 @@ void Foam::fbm::contactSearch::search
         {
             if (cellWidth[d] > 0)
             {
-                lo[d] = max
+                // Clamped to the grid as scalars: where the centres hardly
+                // spread in a direction (a cell width of round-off size)
+                // the reach is many cell widths, beyond a label
+                const scalar last = nCells_[d] - 1;
+                lo[d] = label
                 (
-                    label(0),
-                    label(std::floor
+                    max
                     (
-                        (X[i][d] - reach - bb.min()[d])/cellWidth[d]
-                    ))
+                        scalar(0),
+                        std::floor
+                        (
+                            (X[i][d] - reach - bb.min()[d])/cellWidth[d]
+                        )
+                    )
                 );
-                hi[d] = min
+                hi[d] = label
                 (
-                    nCells_[d] - 1,
-                    label(std::floor
+                    min
                     (
-                        (X[i][d] + reach - bb.min()[d])/cellWidth[d]
-                    ))
+                        last,
+                        std::floor
+                        (
+                            (X[i][d] + reach - bb.min()[d])/cellWidth[d]
+                        )
+                    )
                 );
             }
             else
