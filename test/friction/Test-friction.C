@@ -144,6 +144,37 @@ dictionary ellipsoidDict(const vector& e)
 }
 
 
+// A box of edges L as a triSurface body: its OBJ file written to
+// constant/triSurface/<name>.obj
+dictionary boxSurfaceDict
+(
+    const Time& runTime,
+    const word& name,
+    const vector& L
+)
+{
+    const fileName dir(runTime.path()/runTime.constant()/"triSurface");
+    mkDir(dir);
+    OFstream os(dir/(name + ".obj"));
+    for (label k = 0; k < 8; ++k)
+    {
+        os  << "v " << ((k & 1) ? L.x() : 0) << ' '
+            << ((k & 2) ? L.y() : 0) << ' ' << ((k & 4) ? L.z() : 0) << nl;
+    }
+    // Outward normals: vertex k = x bit 1, y bit 2, z bit 4 (1-based)
+    os  << "f 1 3 4\nf 1 4 2\n"      // z = 0
+        << "f 5 6 8\nf 5 8 7\n"      // z = L
+        << "f 1 2 6\nf 1 6 5\n"      // y = 0
+        << "f 3 7 8\nf 3 8 4\n"      // y = L
+        << "f 1 5 7\nf 1 7 3\n"      // x = 0
+        << "f 2 4 8\nf 2 8 6\n";     // x = L
+    dictionary d;
+    d.add("type", "triSurface");
+    d.add("file", fileName(name + ".obj"));
+    return d;
+}
+
+
 autoPtr<fbm::body> newBody
 (
     const word& name,
@@ -153,7 +184,8 @@ autoPtr<fbm::body> newBody
     const vector& omega,
     const scalar angle,
     const fvMesh& mesh,
-    const bool rotates = true
+    const bool rotates = true,
+    const bool translates = true
 )
 {
     fbm::bodyState s(X, U, omega);
@@ -163,7 +195,7 @@ autoPtr<fbm::body> newBody
     (
         new fbm::body
         (
-            name, fbm::bodyShape::New(shapeDict, mesh), 1.0, s, true,
+            name, fbm::bodyShape::New(shapeDict, mesh), 1.0, s, translates,
             rotates
         )
     );
@@ -173,7 +205,9 @@ autoPtr<fbm::body> newBody
 // A body settled on the floor with vertical gravity, then on the incline
 // (gravity turned by theta) for 0.5 s: the velocity along the incline and
 // the angular velocity at t = 0.1 and 0.5 after the turn, the distance
-// travelled
+// travelled. With slabDict it rests instead on a fixed body of that shape,
+// a slab 0.1 thick lying on the floor: the same incline through a pair
+// contact
 struct inclineResult
 {
     scalar a;
@@ -181,6 +215,7 @@ struct inclineResult
     scalar distance;
     scalar Uend;
     scalar omegaEnd;
+    scalar omegaMagEnd;
     scalar R;
     scalar maxTilt;
     scalar dtSub;
@@ -197,13 +232,31 @@ inclineResult incline
     const bool rotates = true,
     const label nSteps = 250,
     const scalar muStatic = 0,
-    const scalar U0 = 0
+    const scalar U0 = 0,
+    const dictionary* slabDict = nullptr
 )
 {
+    const bool onSlab = slabDict;
     const boundBox& bb = mesh.bounds();
-    const point X0(0.3, bb.min().y() + halfHeight + 0.012, bb.centre().z());
-    PtrList<fbm::body> bodies(1);
+    const scalar base = onSlab ? 0.1 : 0;
+    const point X0
+    (
+        0.3, bb.min().y() + base + halfHeight + 0.012, bb.centre().z()
+    );
+    PtrList<fbm::body> bodies(onSlab ? 2 : 1);
     bodies.set(0, newBody("b0", shapeDict, X0, Zero, Zero, 0, mesh, rotates));
+    if (onSlab)
+    {
+        const point Xs(0.5, bb.min().y() + 0.05, bb.centre().z());
+        bodies.set
+        (
+            1,
+            newBody
+            (
+                "slab", *slabDict, Xs, Zero, Zero, 0, mesh, false, false
+            )
+        );
+    }
     fbm::particleCollisions coll
     (
         collisionsDict(mu, 0.5, muStatic), mesh, bodies
@@ -249,13 +302,16 @@ inclineResult incline
     r.distance = b.centre().x() - x0;
     r.Uend = b.U().x();
     r.omegaEnd = b.omega().z();
+    r.omegaMagEnd = mag(b.omega());
     r.R = b.shape().radius();
     r.maxTilt = maxTilt;
     r.dtSub = dt/coll.nSubCycles(dt);
     Info<< "    mu " << mu << ": a " << r.a << ", d(omega)/dt " << r.alpha
         << ", distance in 0.5 s " << r.distance << ", U " << r.Uend
         << ", omega " << r.omegaEnd << ", largest tilt " << maxTilt
-        << ", wall gap " << coll.minWallGap() << ", slip " << r.slip
+        << ", " << (onSlab ? "pair gap " : "wall gap ")
+        << (onSlab ? coll.minPairGap() : coll.minWallGap())
+        << ", slip " << r.slip
         << nl;
     return r;
 }
@@ -404,8 +460,8 @@ int main(int argc, char *argv[])
     (
         "csv", "file",
         "instead of the checks, the incline for a range of mu (block, block"
-        " not turning, disk) into a CSV file (validation/friction; with"
-        " -model, that model's)"
+        " not turning, disk, block on a fixed slab) into a CSV file"
+        " (validation/friction; with -model, that model's)"
     );
     argList::addOption
     (
@@ -428,6 +484,15 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
 
+    // The fixed slab of the pair-contact incline: a rectangle 0.96 x 0.1
+    // in 2D, a triSurface box 0.96 x 0.1 x 0.96 in 3D
+    const dictionary slabDict
+    (
+        mesh.nSolutionD() == 3
+      ? boxSurfaceDict(runTime, "slab", vector(0.96, 0.1, 0.96))
+      : boxDict(0.96, 0.1)
+    );
+
     fileName csvFile;
     if (args.readIfPresent("csv", csvFile))
     {
@@ -446,6 +511,14 @@ int main(int argc, char *argv[])
             const inclineResult block(incline(boxDict(0.2, 0.1), 0.05, mu, mesh));
             const inclineResult held(incline(boxDict(0.2, 0.1), 0.05, mu, mesh, false));
             const inclineResult disk(incline(circleDict(0.1), 0.1, mu, mesh));
+            const inclineResult slab
+            (
+                incline
+                (
+                    boxDict(0.2, 0.1), 0.05, mu, mesh, true, 250, 0, 0,
+                    &slabDict
+                )
+            );
             const scalar aDisk =
                 (mu >= s/(3*c)) ? 2.0/3*gMag*s : gMag*(s - mu*c);
             for
@@ -454,7 +527,7 @@ int main(int argc, char *argv[])
               : List<Tuple2<word, const inclineResult*>>
                 ({
                     {"block", &block}, {"blockNotTurning", &held},
-                    {"disk", &disk}
+                    {"disk", &disk}, {"blockOnSlab", &slab}
                 })
             )
             {
@@ -500,6 +573,42 @@ int main(int argc, char *argv[])
                 held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
             );
         }
+
+        // A box on a fixed slab, face on face (triSurface boxes): the
+        // pair-contact incline of 2D below in 3D, its dashpot shared among
+        // the corners of the faces' overlap
+        Info<< nl << "Box 0.2 x 0.1 x 0.2 on a fixed slab 0.96 x 0.1 x 0.96"
+            << ", theta 20 degrees" << nl;
+        const dictionary box3(boxSurfaceDict(runTime, "box", vector(0.2, 0.1, 0.2)));
+        const inclineResult boxSlide
+        (
+            incline(box3, 0.05, 0.2, mesh, true, 250, 0, 0, &slabDict)
+        );
+        const inclineResult boxHold
+        (
+            incline(box3, 0.05, 0.5, mesh, true, 250, 0, 0, &slabDict)
+        );
+        fbmTest::check
+        (
+            "box on a slab, mu 0.2: a = g (sin - mu cos)",
+            boxSlide.a/(gMag*(s - 0.2*c)), 1, 1e-3
+        );
+        fbmTest::check
+        (
+            "box on a slab, mu 0.2: no rocking (|omega| R / U at the end)",
+            boxSlide.omegaMagEnd*boxSlide.R/boxSlide.Uend, 0, 1e-2
+        );
+        fbmTest::check
+        (
+            "box on a slab, mu 0.2: does not tip (largest tilt < 0.05)",
+            boxSlide.maxTilt, 0, 0.05
+        );
+        fbmTest::check
+        (
+            "box on a slab, mu 0.5: holds (distance / frictionless"
+            " 1/2 g sin(theta) (0.5 s)^2)",
+            boxHold.distance/(0.5*gMag*s*0.25), 0, 1e-2
+        );
 
         Info<< nl << "Oblique collision, no gravity" << nl;
         oblique("spheres", sphereDict(0.1), 0.3, true, mesh);
@@ -594,6 +703,62 @@ int main(int argc, char *argv[])
                 held.Uend/(gMag*s*2*held.dtSub), 1, 0.05
             );
         }
+    }
+
+    // ---- The block on a fixed slab: the incline through a pair contact ----
+    {
+        Info<< nl << "Block 0.2 x 0.1 on a fixed slab 0.96 x 0.1, theta 20"
+            << " degrees" << nl;
+        const dictionary box(boxDict(0.2, 0.1));
+        auto onSlab = [&](const scalar mu, const bool rotates)
+        {
+            return incline(box, 0.05, mu, mesh, rotates, 250, 0, 0, &slabDict);
+        };
+        const inclineResult free(onSlab(0, true));
+        const inclineResult slide(onSlab(0.2, true));
+        const inclineResult hold(onSlab(0.5, true));
+        // The same on the floor (a wall contact), for comparison
+        const inclineResult floorSlide(incline(box, 0.05, 0.2, mesh));
+        const inclineResult floorHold(incline(box, 0.05, 0.5, mesh));
+        fbmTest::check
+        (
+            "slab, no friction: a = g sin(theta)", free.a/(gMag*s), 1, 1e-3
+        );
+        fbmTest::check
+        (
+            "slab, mu 0.2: a = g (sin - mu cos)",
+            slide.a/(gMag*(s - 0.2*c)), 1, 1e-3
+        );
+        // The face on the slab's face pitches forward as on the floor and
+        // rests at that tilt: the rocking speed |omega| R at the end
+        // against the sliding speed (with the dashpot at the middle of the
+        // faces' overlap alone, 5.3e-2; measured 5.8e-4 with it shared
+        // among the overlap's ends, 1.0e-3 on the floor) and the largest
+        // tilt against the floor's (0.0119 against 0.0049 without the
+        // shared dashpot; 0.0049 with it)
+        fbmTest::check
+        (
+            "slab, mu 0.2: no rocking (|omega| R / U at the end)",
+            mag(slide.omegaEnd)*slide.R/slide.Uend, 0, 1e-2
+        );
+        fbmTest::check
+        (
+            "slab, mu 0.2: largest tilt / the floor's",
+            slide.maxTilt/floorSlide.maxTilt, 1, 0.1
+        );
+        fbmTest::check
+        (
+            "slab, mu 0.5: holds (path / frictionless path)",
+            hold.distance/free.distance, 0, 1e-2
+        );
+        // Held, it rocks no more than on the floor (|omega| R at the end:
+        // 3.0e-2 without the shared dashpot, 8.0e-4 with it, 1.4e-3 on
+        // the floor)
+        fbmTest::check
+        (
+            "slab, mu 0.5: |omega| R at the end / the floor's",
+            mag(hold.omegaEnd)/max(mag(floorHold.omegaEnd), VSMALL), 0, 1
+        );
     }
 
     // ---- A disk on the incline ----

@@ -1,6 +1,7 @@
 """Table and chart of the friction on an incline.
 
-results.csv (Test-friction -csv, frictionModel velocityRegularised),
+results.csv (Test-friction -csv, frictionModel velocityRegularised; bodies
+block, blockNotTurning, disk and blockOnSlab),
 results-spring.csv (-model tangentialSpring) -> table.md, table-spring.md,
 friction.png
 """
@@ -28,39 +29,44 @@ spring = read('results-spring.csv')
 g, theta = 10.0, math.radians(20)
 names = {'block': 'block 0.2 x 0.1 (turns)',
          'blockNotTurning': 'block, rotation off',
-         'disk': 'disk R 0.1 (turns)'}
+         'disk': 'disk R 0.1 (turns)',
+         'blockOnSlab': 'block on a fixed slab (turns)'}
 
 # Table: acceleration against the exact one, creep where held
 with open(os.path.join(here, 'table.md'), 'w') as t:
-    t.write('| mu | block a | block, rotation off a | disk a | exact a: '
-            'block / disk | disk slip (U + omega R)/U | held: creep '
-            'speed, block / rotation off |\n')
-    t.write('|---|---|---|---|---|---|---|\n')
+    t.write('| mu | block a | block, rotation off a | disk a | block on a '
+            'slab a | exact a: block / disk | disk slip (U + omega R)/U | '
+            'held: creep speed, block / rotation off / on a slab |\n')
+    t.write('|---|---|---|---|---|---|---|---|\n')
     for mu in sorted({r['mu'] for r in rows}):
-        b, n, d = (next(r for r in rows if r['body'] == k and r['mu'] == mu)
-                   for k in ('block', 'blockNotTurning', 'disk'))
+        b, n, d, s = (next(r for r in rows if r['body'] == k and r['mu'] == mu)
+                      for k in ('block', 'blockNotTurning', 'disk',
+                                'blockOnSlab'))
         held = b['a_exact'] == 0
-        t.write('| %g | %.4f | %.4f | %.4f | %.4f / %.4f | %.4f | %s |\n'
-                % (mu, b['a'], n['a'], d['a'], b['a_exact'], d['a_exact'],
-                   d['slip'],
-                   '%.2g / %.2g m/s' % (b['U_end'], n['U_end']) if held
+        t.write('| %g | %.4f | %.4f | %.4f | %.4f | %.4f / %.4f | %.4f | %s |\n'
+                % (mu, b['a'], n['a'], d['a'], s['a'], b['a_exact'],
+                   d['a_exact'], d['slip'],
+                   '%.2g / %.2g / %.2g m/s' % (b['U_end'], n['U_end'],
+                                               s['U_end']) if held
                    else '-'))
 
 # The spring: the same table, the held bodies' corner slid in 0.5 s
 with open(os.path.join(here, 'table-spring.md'), 'w') as t:
-    t.write('| mu | block a | block, rotation off a | disk a | exact a: '
-            'block / disk | disk slip (U + omega R)/U | held: front corner '
-            'slid in 0.5 s, block / rotation off (velocityRegularised) |\n')
-    t.write('|---|---|---|---|---|---|---|\n')
+    t.write('| mu | block a | block, rotation off a | disk a | block on a '
+            'slab a | exact a: block / disk | disk slip (U + omega R)/U | '
+            'held: front corner slid in 0.5 s, block / rotation off '
+            '(velocityRegularised) |\n')
+    t.write('|---|---|---|---|---|---|---|---|\n')
     for mu in sorted({r['mu'] for r in spring}):
-        b, n, d = (next(r for r in spring if r['body'] == k and r['mu'] == mu)
-                   for k in ('block', 'blockNotTurning', 'disk'))
+        b, n, d, s = (next(r for r in spring if r['body'] == k and r['mu'] == mu)
+                      for k in ('block', 'blockNotTurning', 'disk',
+                                'blockOnSlab'))
         b0, n0 = (next(r for r in rows if r['body'] == k and r['mu'] == mu)
                   for k in ('block', 'blockNotTurning'))
         held = b['a_exact'] == 0
-        t.write('| %g | %.4f | %.4f | %.4f | %.4f / %.4f | %.4f | %s |\n'
-                % (mu, b['a'], n['a'], d['a'], b['a_exact'], d['a_exact'],
-                   d['slip'],
+        t.write('| %g | %.4f | %.4f | %.4f | %.4f | %.4f / %.4f | %.4f | %s |\n'
+                % (mu, b['a'], n['a'], d['a'], s['a'], b['a_exact'],
+                   d['a_exact'], d['slip'],
                    '%.2g / %.2g m (%.2g / %.2g m)'
                    % (b['corner_slip'], n['corner_slip'], b0['corner_slip'],
                       n0['corner_slip']) if held else '-'))
@@ -72,7 +78,8 @@ ax[0].plot(mus, [g*max(math.sin(theta) - m*math.cos(theta), 0) for m in mus],
 ax[0].plot(mus, [(2/3*g*math.sin(theta) if m >= math.tan(theta)/3
                   else g*(math.sin(theta) - m*math.cos(theta))) for m in mus],
            'k--', lw=1, label='exact, disk (rolls from tan/3)')
-for k, mk in (('block', 'o'), ('blockNotTurning', 'x'), ('disk', 's')):
+for k, mk in (('block', 'o'), ('blockNotTurning', 'x'), ('disk', 's'),
+              ('blockOnSlab', '+')):
     sel = [r for r in rows if r['body'] == k]
     ax[0].plot([r['mu'] for r in sel], [r['a'] for r in sel], mk,
                mfc='none', label=names[k])
@@ -80,7 +87,7 @@ ax[0].set_xlabel('friction coefficient mu')
 ax[0].set_ylabel('acceleration along the incline [m/s^2]')
 ax[0].set_title('incline 20 degrees, g = 10, no fluid')
 ax[0].legend(fontsize=8)
-for k, mk in (('block', 'o'), ('blockNotTurning', 'x')):
+for k, mk in (('block', 'o'), ('blockNotTurning', 'x'), ('blockOnSlab', '+')):
     sel = [r for r in rows if r['body'] == k and r['a_exact'] == 0]
     ax[1].semilogy([r['mu'] for r in sel], [abs(r['U_end']) for r in sel], mk,
                    mfc='none', label=names[k])

@@ -40,14 +40,16 @@ inline bool lexLess(const Foam::vector2D& a, const Foam::vector2D& b)
 }
 
 // The middle of the part of the segment p0-p1 inside the convex polygon
-// P (counter-clockwise; Cyrus & Beck 1978); false where it misses P
+// P (counter-clockwise; Cyrus & Beck 1978); false where it misses P.
+// region (if given) gets the part's two ends where it is longer than tol
 bool clipSegment
 (
     const Foam::vector2D& p0,
     const Foam::vector2D& p1,
     const Foam::List<Foam::vector2D>& P,
     const Foam::scalar tol,
-    Foam::vector2D& middle
+    Foam::vector2D& middle,
+    Foam::DynamicList<Foam::vector2D>* region
 )
 {
     using namespace Foam;
@@ -85,11 +87,18 @@ bool clipSegment
         return false;
     }
     middle = p0 + 0.5*(tIn + tOut)*d;
+    if (region && (tOut - tIn)*mag(d) > tol)
+    {
+        region->append(p0 + tIn*d);
+        region->append(p0 + tOut*d);
+    }
     return true;
 }
 
 // The crossing or the middle of the overlap of the segments a0-a1 and
-// b0-b1; false where they miss each other
+// b0-b1; false where they miss each other. region (if given) gets the
+// overlap's two ends where the segments lie on one line and overlap by
+// more than tol
 bool segmentMiddle
 (
     const Foam::vector2D& a0,
@@ -97,7 +106,8 @@ bool segmentMiddle
     const Foam::vector2D& b0,
     const Foam::vector2D& b1,
     const Foam::scalar tol,
-    Foam::vector2D& middle
+    Foam::vector2D& middle,
+    Foam::DynamicList<Foam::vector2D>* region
 )
 {
     using namespace Foam;
@@ -135,6 +145,11 @@ bool segmentMiddle
         return false;
     }
     middle = a0 + 0.5*(lo + hi)*ea;
+    if (region && hi - lo > tol)
+    {
+        region->append(a0 + lo*ea);
+        region->append(a0 + hi*ea);
+    }
     return true;
 }
 
@@ -204,7 +219,9 @@ Foam::List<Foam::vector2D> Foam::fbm::contactPatch::project
 Foam::scalar Foam::fbm::contactPatch::intervalMiddle
 (
     const UList<vector2D>& a,
-    const UList<vector2D>& b
+    const UList<vector2D>& b,
+    scalar& lo,
+    scalar& hi
 ) const
 {
     scalar loA = GREAT, hiA = -GREAT, loB = GREAT, hiB = -GREAT;
@@ -218,7 +235,9 @@ Foam::scalar Foam::fbm::contactPatch::intervalMiddle
         loB = min(loB, p.x());
         hiB = max(hiB, p.x());
     }
-    return 0.5*(max(loA, loB) + min(hiA, hiB));
+    lo = max(loA, loB);
+    hi = min(hiA, hiB);
+    return 0.5*(lo + hi);
 }
 
 
@@ -279,7 +298,8 @@ bool Foam::fbm::contactPatch::hullMiddle
     const List<vector2D>& a,
     const List<vector2D>& b,
     const scalar tol,
-    vector2D& middle
+    vector2D& middle,
+    DynamicList<vector2D>* region
 )
 {
     const label na = a.size();
@@ -297,15 +317,15 @@ bool Foam::fbm::contactPatch::hullMiddle
     }
     if (na == 2 && nb == 2)
     {
-        return segmentMiddle(a[0], a[1], b[0], b[1], tol, middle);
+        return segmentMiddle(a[0], a[1], b[0], b[1], tol, middle, region);
     }
     if (na == 2)
     {
-        return clipSegment(a[0], a[1], b, tol, middle);
+        return clipSegment(a[0], a[1], b, tol, middle, region);
     }
     if (nb == 2)
     {
-        return clipSegment(b[0], b[1], a, tol, middle);
+        return clipSegment(b[0], b[1], a, tol, middle, region);
     }
 
     // Two polygons: a clipped by each edge of b (Sutherland & Hodgman)
@@ -342,6 +362,41 @@ bool Foam::fbm::contactPatch::hullMiddle
         }
     }
     middle = polygonCentroid(out, tol*tol);
+    if (region)
+    {
+        // The corners (clipping can repeat one: each counted once) moved
+        // together so that their mean is the centroid
+        DynamicList<vector2D> corners(out.size());
+        for (const vector2D& p : out)
+        {
+            if (corners.empty() || mag(p - corners.last()) > tol)
+            {
+                corners.append(p);
+            }
+        }
+        if (corners.size() > 1 && mag(corners.first() - corners.last()) <= tol)
+        {
+            corners.remove();
+        }
+        vector2D mean(Zero);
+        for (const vector2D& p : corners)
+        {
+            mean += p;
+        }
+        mean /= corners.size();
+        scalar extent = 0;
+        for (const vector2D& p : corners)
+        {
+            extent = max(extent, mag(p - mean));
+        }
+        if (extent > tol)
+        {
+            for (const vector2D& p : corners)
+            {
+                region->append(p + middle - mean);
+            }
+        }
+    }
     return true;
 }
 
@@ -387,26 +442,46 @@ Foam::point Foam::fbm::contactPatch::centre
     const UList<scalar>& wA,
     const UList<point>& ptsB,
     const UList<scalar>& wB,
-    const scalar length
+    const scalar length,
+    DynamicList<point>* region
 ) const
 {
+    if (region)
+    {
+        region->clear();
+    }
     if (ptsA.size() <= 1 && ptsB.size() <= 1)
     {
         return c0;
     }
     const List<vector2D> a(project(c0, ptsA, wA));
     const List<vector2D> b(project(c0, ptsB, wB));
+    const scalar tol = 1e-9*length;
 
     if (planar_)
     {
-        return c0 + intervalMiddle(a, b)*t1_;
+        scalar lo = 0, hi = 0;
+        const scalar m = intervalMiddle(a, b, lo, hi);
+        if (region && hi - lo > tol)
+        {
+            region->append(c0 + lo*t1_);
+            region->append(c0 + hi*t1_);
+        }
+        return c0 + m*t1_;
     }
 
-    const scalar tol = 1e-9*length;
     vector2D m(Zero);
-    if (!hullMiddle(hull(a, tol), hull(b, tol), tol, m))
+    DynamicList<vector2D> q;
+    if (!hullMiddle(hull(a, tol), hull(b, tol), tol, m, region ? &q : nullptr))
     {
         return c0;
+    }
+    if (region)
+    {
+        for (const vector2D& p : q)
+        {
+            region->append(c0 + p.x()*t1_ + p.y()*t2_);
+        }
     }
     return c0 + m.x()*t1_ + m.y()*t2_;
 }

@@ -79,6 +79,46 @@ Foam::vector Foam::fbm::particleCollisions::frictionForce
 }
 
 
+void Foam::fbm::particleCollisions::sharedDashpot
+(
+    const body& bi,
+    const label i,
+    const body* bj,
+    const label j,
+    const vector& n,
+    const scalar c,
+    const UList<point>& pts,
+    const UList<scalar>& wts,
+    const vector& offsetI,
+    const vector& offsetJ,
+    vector& Fd,
+    vector& Ti,
+    vector& Tj
+) const
+{
+    const scalar sumW = wts.empty() ? scalar(pts.size()) : sum(wts);
+    forAll(pts, k)
+    {
+        const vector rk(cmptMultiply(planeMask_, pts[k] + offsetI));
+        vector v(U_[i] + (bi.omega() ^ rk));
+        vector rjk(Zero);
+        if (bj)
+        {
+            rjk = cmptMultiply(planeMask_, pts[k] + offsetJ);
+            v -= U_[j] + (bj->omega() ^ rjk);
+        }
+        const scalar wk = wts.empty() ? scalar(1) : wts[k];
+        const vector Fk(-(wk/sumW)*c*(v & n)*n);
+        Fd += Fk;
+        Ti += rk ^ Fk;
+        if (bj)
+        {
+            Tj -= rjk ^ Fk;
+        }
+    }
+}
+
+
 void Foam::fbm::particleCollisions::shapePair
 (
     const PtrList<body>& bodies,
@@ -128,6 +168,7 @@ void Foam::fbm::particleCollisions::shapePair
     // the middle of the overlap, not at one corner)
     const vector& n = c.normal;
     point pc(0.5*(c.pA + c.pB));
+    region_.clear();
     if (bi.shape().hasFlatFaces() || bj.shape().hasFlatFaces())
     {
         const scalar band = 0.5*law.range();
@@ -147,24 +188,41 @@ void Foam::fbm::particleCollisions::shapePair
         }
         pc = contactPatch(n, vector::one - planeMask_).centre
         (
-            pc, faceA_, weightA_, faceB_, weightB_, R_[i] + R_[j]
+            pc, faceA_, weightA_, faceB_, weightB_, R_[i] + R_[j],
+            dampingRatio_ > 0 ? &region_ : nullptr
         );
     }
     const vector ri(cmptMultiply(planeMask_, pc - X_[i]));
     const vector rj(cmptMultiply(planeMask_, pc - X_[j]));
     vector Fi(-law.pairForceAtGap(c.gap, R_[i], R_[j])*n);
 
+    // The dashpot: at the contact point, or where a face meets a face
+    // shared among the points that span their overlap (the same force,
+    // and a torque against the rocking of one face on the other)
+    vector Fd(Zero);
+    vector Tdi(Zero);
+    vector Tdj(Zero);
     if (dampingRatio_ > 0)
     {
         const scalar w = inverseMass(bi, i, ri, n) + inverseMass(bj, j, rj, n);
         if (w > 0)
         {
             const scalar k = depth_*law.pairStiffness(R_[i], R_[j]);
-            const vector vi(U_[i] + (bi.omega() ^ ri));
-            const vector vj(U_[j] + (bj.omega() ^ rj));
-            Fi -=
-                (2*dampingRatio_*Foam::sqrt(k/w)/depth_)
-               *((vi - vj) & n)*n;
+            const scalar cd = 2*dampingRatio_*Foam::sqrt(k/w)/depth_;
+            if (region_.size() > 1)
+            {
+                sharedDashpot
+                (
+                    bi, i, &bj, j, n, cd, region_, UList<scalar>(),
+                    -X_[i], -X_[j], Fd, Tdi, Tdj
+                );
+            }
+            else
+            {
+                const vector vi(U_[i] + (bi.omega() ^ ri));
+                const vector vj(U_[j] + (bj.omega() ^ rj));
+                Fi -= cd*((vi - vj) & n)*n;
+            }
         }
     }
 
@@ -172,7 +230,7 @@ void Foam::fbm::particleCollisions::shapePair
     {
         Fi += frictionForce
         (
-            bi, i, ri, &bj, j, rj, n, max(-(Fi & n), 0.0),
+            bi, i, ri, &bj, j, rj, n, max(-((Fi + Fd) & n), 0.0),
             law.pairStiffness(R_[i], R_[j])
         );
     }
@@ -181,6 +239,13 @@ void Foam::fbm::particleCollisions::shapePair
     F[j] -= Fi;
     T[i] += ri ^ Fi;
     T[j] -= rj ^ Fi;
+    if (region_.size() > 1)
+    {
+        F[i] += Fd;
+        F[j] -= Fd;
+        T[i] += Tdi;
+        T[j] += Tdj;
+    }
 }
 
 
@@ -237,26 +302,18 @@ void Foam::fbm::particleCollisions::shapeWall
             const scalar c = 2*dampingRatio_*Foam::sqrt(k/wi)/depth_;
             if (b.shape().hasFlatFaces())
             {
-                DynamicList<vector>& pts = faceA_;
-                DynamicList<scalar>& wts = weightA_;
-                pts.clear();
-                wts.clear();
+                faceA_.clear();
+                weightA_.clear();
                 b.shape().supportBand
                 (
-                    b.state().Q(), nw, 0.5*law.range(), pts, wts
+                    b.state().Q(), nw, 0.5*law.range(), faceA_, weightA_
                 );
-                const scalar sumW = sum(wts);
-                forAll(pts, k)
-                {
-                    const vector rk
-                    (
-                        cmptMultiply(planeMask_, pts[k] + 0.5*gap*nw)
-                    );
-                    const vector v(U_[i] + (b.omega() ^ rk));
-                    const vector Fk(-(wts[k]/sumW)*c*(v & nw)*nw);
-                    Fd += Fk;
-                    Td += rk ^ Fk;
-                }
+                vector unused(Zero);
+                sharedDashpot
+                (
+                    b, i, nullptr, -1, nw, c, faceA_, weightA_,
+                    0.5*gap*nw, Zero, Fd, Td, unused
+                );
             }
             else
             {
