@@ -19,12 +19,14 @@ for r in csv.DictReader(open(os.path.join(here, 'sweep.csv'))):
 
 COUPLINGS = {'P': 'coupling rigidProjection', 'S': 'coupling semiImplicit',
              'B': 'explicit, addedMassCoeff C_a = 1, backward time scheme '
-                  '(the tutorial since 2026-12-05; the others Euler)'}
+                  '(the tutorial since 2026-12-05; the others Euler)',
+             'SB': 'coupling semiImplicit, backward time scheme'}
 
 
 def key(c):
     """Coupling label: C_a as a number, then 'P' (rigidProjection), 'S'
-    (semiImplicit) and 'B' (C_a 1 with backward)."""
+    (semiImplicit), 'B' (C_a 1 with backward) and 'SB' (semiImplicit
+    with backward)."""
     return (1, c) if c in COUPLINGS else (0, float(c))
 
 

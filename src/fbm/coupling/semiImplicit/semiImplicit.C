@@ -155,19 +155,26 @@ void Foam::fbm::couplingModels::semiImplicit::pressureForces
 }
 
 
+Foam::scalar Foam::fbm::couplingModels::semiImplicit::shellRate() const
+{
+    const fluidRate* rate = system_.rate();
+    return rate ? 1 + rate->weight() : 1;
+}
+
+
 Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
 (
     const label bi
 ) const
 {
     // dt rho_f/rho of body and shell together: mass M + m in the volume
-    // V_b + m/rho_f
+    // V_b + m/rho_f (the shell's inertia at the fluid's rate)
     const body& b = system_.bodies()[bi];
     const scalar Vb = b.shape().volume();
     return
         system_.mesh().time().deltaTValue()
        *(system_.rhoFluid()*Vb + inertia_.shellMass(bi))
-       /inertia_.totalMass(bi, b.rho()*Vb);
+       /inertia_.totalMass(bi, b.rho()*Vb, shellRate());
 }
 
 
@@ -181,7 +188,8 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::rigidImpulse
 {
     const body& b = system_.bodies()[bi];
     const scalar dt = system_.mesh().time().deltaTValue();
-    const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume());
+    const scalar M =
+        inertia_.totalMass(bi, b.rho()*b.shape().volume(), shellRate());
     return
         cmptMultiply(planeMask_, dt*P/M)
       + (angularImpulse(bi, dt*Q) ^ (x - b.centre()));
@@ -199,7 +207,7 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
     {
         return Zero;
     }
-    const symmTensor I(inertia_.totalInertia(bi, b.inertia()));
+    const symmTensor I(inertia_.totalInertia(bi, b.inertia(), shellRate()));
     if (cmptSum(axisMask_) == 1)
     {
         // 2D: about the empty direction, a principal direction of I
@@ -224,6 +232,10 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     pressureTorque_(system.bodies().size(), Zero),
     directForce_(system.bodies().size(), Zero),
     directTorque_(system.bodies().size(), Zero),
+    directForceEuler_(system.bodies().size(), Zero),
+    directTorqueEuler_(system.bodies().size(), Zero),
+    lastDirectForceEuler_(system.bodies().size(), Zero),
+    lastDirectTorqueEuler_(system.bodies().size(), Zero),
     inertia_(system),
     limit_
     (
@@ -237,13 +249,6 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
 {
     rejectContactProjection();
     rejectAddedMassCoeff();
-    requireEuler
-    (
-        "Its body terms (the shell's and the damping mass's lagged inertia,"
-        " the pressure impulse) are written for Euler; the backward scheme"
-        " is validated with the explicit coupling only"
-        " (validation/settlingParticle)."
-    );
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -292,6 +297,7 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
     PtrList<body>& bodies = system_.bodies();
     const label nb = bodies.size();
     List<vector> U0(nb), a0(nb), omega0(nb), omegaDot0(nb);
+    List<vector> a00(nb), omegaDot00(nb);
     forAll(bodies, bi)
     {
         const bodyState& s = bodies[bi].state();
@@ -299,6 +305,8 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
         a0[bi] = s.acceleration();
         omega0[bi] = s.omega();
         omegaDot0[bi] = s.angularAcceleration();
+        a00[bi] = s.acceleration00();
+        omegaDot00[bi] = s.angularAcceleration00();
     }
 
     const bool inside = system_.advance();
@@ -308,6 +316,17 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
     // model's force as their inertia -m a of the last step: advance them
     // with the body, (M + m)(U - U^n) = M (U* - U^n) + dt m a^n (and
     // likewise the rotation), so that this inertia is not lagged
+    //
+    // With backward the force held the shell's inertia at the fluid's
+    // rate of the last step, -m_s D^n, D^n = (1 + w^n) a^n - w^n a^{n-1},
+    // and the shell's rate in this step is D = (1 + w) a - w a^n
+    // (fbm::fluidRate): (M + (1 + w) m_s + m_d)(U - U^n) = M (U* - U^n) +
+    // dt (m_s (D^n + w a^n) + m_d a^n), m_d the damping mass, whose lagged
+    // force is a velocity's response, not a rate; Euler (w = w^n = 0) is
+    // the line above, bit for bit
+    const fluidRate* rate = system_.rate();
+    const scalar w = rate ? rate->weight() : 0;
+    const scalar w0 = rate ? rate->weight0() : 0;
     if (lastStepKnown_)
     {
         const scalar dt = system_.mesh().time().deltaTValue();
@@ -320,18 +339,42 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
             body& b = bodies[bi];
             bodyState& s = b.state();
             const scalar M = b.rho()*b.shape().volume();
+            const scalar ms = inertia_.shellMass(bi);
             const vector dU
             (
-                (M*(s.U() - U0[bi]) + dt*m*a0[bi])/(M + m)
+                (w == 0 && w0 == 0)
+              ? (M*(s.U() - U0[bi]) + dt*m*a0[bi])/(M + m)
+              : (
+                    M*(s.U() - U0[bi])
+                  + dt*
+                    (
+                        ms*((1 + w0)*a0[bi] - w0*a00[bi] + w*a0[bi])
+                      + (m - ms)*a0[bi]
+                    )
+                )/inertia_.totalMass(bi, M, 1 + w)
             );
             s.U() = U0[bi] + cmptMultiply(planeMask_, dU);
             s.acceleration() = (s.U() - U0[bi])/dt;
             if (b.rotates())
             {
+                const symmTensor& Js = inertia_.shellInertia(bi);
                 const vector L
                 (
-                    (b.inertia() & (s.omega() - omega0[bi]))
+                    (w == 0 && w0 == 0)
+                  ? (b.inertia() & (s.omega() - omega0[bi]))
                   + dt*(inertia_.inertia(bi) & omegaDot0[bi])
+                  : (b.inertia() & (s.omega() - omega0[bi]))
+                  + dt*
+                    (
+                        (
+                            Js
+                          & (
+                                (1 + w0)*omegaDot0[bi] - w0*omegaDot00[bi]
+                              + w*omegaDot0[bi]
+                            )
+                        )
+                      + ((inertia_.inertia(bi) - Js) & omegaDot0[bi])
+                    )
                 );
                 s.omega() = omega0[bi] + angularImpulse(bi, L);
                 s.angularAcceleration() = (s.omega() - omega0[bi])/dt;
@@ -553,18 +596,43 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     sumOverProcessors(directTorque_);
     sumOverProcessors(pushedMass);
 
+    // The enclosed fluid's rate holds the cells' push at the fluid's rate:
+    // with backward (1 + w) times this step's and -w times the last step's
+    // (Euler: this step's, bit for bit)
+    lastDirectForceEuler_ = directForceEuler_;
+    lastDirectTorqueEuler_ = directTorqueEuler_;
+    directForceEuler_ = directForce_;
+    directTorqueEuler_ = directTorque_;
+    if (const fluidRate* rate = system_.rate())
+    {
+        forAll(bodies, bi)
+        {
+            directForce_[bi] =
+                rate->rate(directForceEuler_[bi], lastDirectForceEuler_[bi]);
+            directTorque_[bi] =
+                rate->rate
+                (
+                    directTorqueEuler_[bi], lastDirectTorqueEuler_[bi]
+                );
+        }
+    }
+
     // The direct force reaches the body one step later, as a lagged mass
     // m_d = rho_f sum w V on the pressure part of its acceleration; a
     // lagged mass above the body's inertia makes the update unstable (a
     // light disk, rho_s/rho_f 0.5, swung by a factor of 4 at dt 2.5e-4,
     // where the damping mass is small), so it is kept at most
-    // maxDirectMass_ times the inertia M + m of the step
+    // maxDirectMass_ times the inertia M + m of the step. With backward
+    // the lagged mass is the fluid's rate coefficient 1 + w times m_d
+    // (the light disk at dt 1e-3 drifted off its rising speed, 8.30
+    // against 8.60-8.68 at the other steps, with m_d alone)
+    const scalar c = shellRate();
     forAll(bodies, bi)
     {
         if (!heavy_[bi] || pushedMass[bi] <= 0) continue;
         const body& b = bodies[bi];
-        const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume());
-        const scalar f = min(scalar(1), maxDirectMass_*M/pushedMass[bi]);
+        const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume(), c);
+        const scalar f = min(scalar(1), maxDirectMass_*M/(c*pushedMass[bi]));
         directForce_[bi] *= f;
         directTorque_[bi] *= f;
     }
@@ -621,6 +689,30 @@ void Foam::fbm::couplingModels::semiImplicit::readState
             << state.name() << "; the first step takes that of the"
             << " restart pressure on the moved bodies" << nl;
     }
+
+    // With backward: the push of the bodies' cells in the step that led
+    // to the restart time, which the enclosed fluid's rate of the next
+    // step holds too (written with backward only)
+    if (stateHasEntry(state, "directForceEuler"))
+    {
+        forAll(bodies, bi)
+        {
+            const dictionary& d = state.subDict(bodies[bi].name());
+            directForceEuler_[bi] = d.get<vector>("directForceEuler");
+            directTorqueEuler_[bi] = d.get<vector>("directTorqueEuler");
+        }
+    }
+    else if
+    (
+        lastStepKnown_
+     && system_.mesh().ddtScheme("ddt(U)")[0].wordToken() == "backward"
+    )
+    {
+        Info<< "fbm: coupling " << type() << ": no directForceEuler in "
+            << state.name() << " (a state written with Euler); with"
+            << " backward the first step takes the last step's push of the"
+            << " bodies' cells as zero" << nl;
+    }
 }
 
 
@@ -635,6 +727,12 @@ void Foam::fbm::couplingModels::semiImplicit::writeState
         os.writeEntry("pressureForce", pressureForce_[bi]);
         os.writeEntry("pressureTorque", pressureTorque_[bi]);
         inertia_.write(bi, os);
+    }
+    const fluidRate* rate = system_.rate();
+    if (rate && rate->timeScheme() == fluidRate::scheme::backward)
+    {
+        os.writeEntry("directForceEuler", directForceEuler_[bi]);
+        os.writeEntry("directTorqueEuler", directTorqueEuler_[bi]);
     }
     // The viscous limit of the next step (the same for every body)
     limit_.write(os);
