@@ -8,8 +8,9 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
     body, coupling          sphere or disk2D; explicit or semiImplicit
     variant                 the run's name before -RH: explicit,
                             semiImplicit, explicitExtrap, semiImplicitExtrap,
-                            explicitExtrapP, explicitExtrapBackward (the
-                            backward time scheme; the others Euler)
+                            explicitExtrapP, explicitExtrapBackward,
+                            semiImplicitExtrapBackward (the backward time
+                            scheme; the others Euler)
     predictor               lagged, extrapolated flux (PIMPLE
                             extrapolatePredictor yes, extrapolatePressure
                             no, with minIter 10 for U) or extrapolated
@@ -74,7 +75,8 @@ COLUMNS = ["run", "body", "coupling", "R_h", "h", "cells", "steps", "t_end",
            "warnings", "warn_t", "warn_ratio", "status", "variant",
            "predictor"]
 VARIANTS = ["explicit", "semiImplicit", "explicitExtrap", "semiImplicitExtrap",
-            "explicitExtrapP", "explicitExtrapBackward"]
+            "explicitExtrapP", "explicitExtrapBackward",
+            "semiImplicitExtrapBackward"]
 ORDER = ["%s-RH%d" % (v, n) for v in VARIANTS for n in (3, 4, 6)] \
     + ["disk2D-L4"]
 TIMES = ["0.1", "0.15", "0.25"]

@@ -31,7 +31,10 @@ STYLES = {"explicit": ("-", "o", "explicit, addedMassCoeff 2"),
           "explicitExtrapP": ((0, (5, 1)), "v", "explicit, extrapolated flux"
                               " and pressure, 3 PISO correctors"),
           "explicitExtrapBackward": ((0, (1, 1)), "*", "explicit, extrapolated"
-                                     " flux, backward")}
+                                     " flux, backward"),
+          "semiImplicitExtrapBackward": ((0, (3, 1, 1, 1)), "P",
+                                         "semiImplicit, extrapolated flux,"
+                                         " backward")}
 
 
 def read(name):
