@@ -364,20 +364,10 @@ bool Foam::fbm::contactPatch::hullMiddle
     middle = polygonCentroid(out, tol*tol);
     if (region)
     {
-        // The corners (clipping can repeat one: each counted once) moved
-        // together so that their mean is the centroid
-        DynamicList<vector2D> corners(out.size());
-        for (const vector2D& p : out)
-        {
-            if (corners.empty() || mag(p - corners.last()) > tol)
-            {
-                corners.append(p);
-            }
-        }
-        if (corners.size() > 1 && mag(corners.first() - corners.last()) <= tol)
-        {
-            corners.remove();
-        }
+        // The corners (clipping can repeat one or leave one on an edge:
+        // the hull counts each corner once) moved together so that their
+        // mean is the centroid
+        const List<vector2D> corners(hull(out, tol));
         vector2D mean(Zero);
         for (const vector2D& p : corners)
         {
