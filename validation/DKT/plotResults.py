@@ -221,7 +221,8 @@ def plot(trajs, rows, suffix=""):
     ax[2].plot([], [], 'k:', lw=0.8, label='repulsion range 1.5 h')
     ax[2].legend(fontsize=8)
     ax[0].set_title('DKT: two disks, rho_s/rho_f = 1.01 (fbmFoam%s)'
-                    % suffix.replace('-', ', coupling '))
+                    % suffix.replace('-backward', ', backward')
+                    .replace('-', ', coupling '))
     fig.tight_layout()
     fig.savefig(os.path.join(here, 'dkt%s.png' % suffix), dpi=120)
 

@@ -13,10 +13,12 @@ error of the moving interface. Usage: makeCases.py TUTORIAL DEST V
 """
 import os
 import shutil
+import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "..", "bin"))
+BIN = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                   "..", "..", "..", "bin")
+sys.path.insert(0, BIN)
 from fbmCaseEdit import edit, bodyFrameInflow  # noqa: E402  (bin/fbmCaseEdit.py)
 
 tutorial, dest, V = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -43,6 +45,12 @@ for name in ("bodyFrame", "moving"):
     edit(case + "/constant/fbmProperties", [
         ("translate   yes;", "translate   no;"),
         ("rotate      yes;", "rotate      no;")])
+    # A held or prescribed body: no coupling acts on it. The explicit
+    # coupling's settings (no PIMPLE consistent, which the tutorial's
+    # coupling semiImplicit needs since 2026-12-05): the fluid step of the
+    # committed runs (results.csv)
+    subprocess.check_call([os.path.join(BIN, "fbmSetCoupling"), case,
+                           "explicit"])
 
     if name == "moving":
         edit(case + "/constant/fbmProperties", [

@@ -22,6 +22,8 @@ section 2). Reads every run in runs/ (made by ./Allrun):
     runs/fbmBackward-L<N>       the same with the backward time scheme:
                                 the tutorial as it is
     runs/fbmSemiImplicit-L<N>   fbmExplicit with coupling semiImplicit
+    runs/fbmSemiImplicitBackward-L<N>
+                                the same with the backward time scheme
     runs/fbmOuter3-L<N>         the same with three outer correctors, no
                                 extrapolatePredictor, no minIter (the
                                 settings of the fbmFoam* runs above)
@@ -267,7 +269,11 @@ order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmExplicitGraded": 10, "fbmExplicitGradedCoOnly": 11,
          "fbmSemiImplicitGraded": 12, "fbmSemiImplicitGradedCoOnly": 13,
          "fbmBackward": 14, "fbmBackwardCoOnly": 15,
-         "fbmBackwardGraded": 16, "fbmBackwardGradedCoOnly": 17}
+         "fbmBackwardGraded": 16, "fbmBackwardGradedCoOnly": 17,
+         "fbmSemiImplicitBackward": 18,
+         "fbmSemiImplicitBackwardCoOnly": 19,
+         "fbmSemiImplicitBackwardGraded": 20,
+         "fbmSemiImplicitBackwardGradedCoOnly": 21}
 
 runs = []
 repeats = []
@@ -473,6 +479,13 @@ label = {
     "fbmBackwardGradedCoOnly": "fbmFoam, tutorial, graded mesh, step by "
                                "maxCo alone",
     "fbmSemiImplicit": "fbmFoam, semiImplicit",
+    "fbmSemiImplicitBackward": "fbmFoam, semiImplicit, backward",
+    "fbmSemiImplicitBackwardCoOnly": "fbmFoam, semiImplicit, backward, step "
+                                     "by maxCo alone",
+    "fbmSemiImplicitBackwardGraded": "fbmFoam, semiImplicit, backward, "
+                                     "graded mesh",
+    "fbmSemiImplicitBackwardGradedCoOnly": "fbmFoam, semiImplicit, backward, "
+                                           "graded mesh, step by maxCo alone",
     "bodyFittedCoOnly": "body-fitted, step by maxCo alone",
     "fbmExplicitCoOnly": "fbmFoam, explicit Euler, step by maxCo alone",
     "fbmSemiImplicitCoOnly": "fbmFoam, semiImplicit, step by maxCo alone",
@@ -494,7 +507,11 @@ methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
                 "fbmSemiImplicitGradedCoOnly": "sienna",
                 "fbmBackward": "black", "fbmBackwardCoOnly": "dimgray",
                 "fbmBackwardGraded": "darkgoldenrod",
-                "fbmBackwardGradedCoOnly": "goldenrod"}
+                "fbmBackwardGradedCoOnly": "goldenrod",
+                "fbmSemiImplicitBackward": "tab:red",
+                "fbmSemiImplicitBackwardCoOnly": "salmon",
+                "fbmSemiImplicitBackwardGraded": "darkred",
+                "fbmSemiImplicitBackwardGradedCoOnly": "indianred"}
 levelStyle = {3: "--", 4: "-", 5: "-."}
 for m, c in methodColour.items():
     for lvl, ls in levelStyle.items():
@@ -577,7 +594,16 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
             ("fbmSemiImplicitGraded", "fbmFoam semiImplicit, graded mesh",
              "tab:brown", "^"),
             ("fbmSemiImplicitGradedCoOnly", "fbmFoam semiImplicit, graded "
-             "mesh, step by maxCo alone", "sienna", "^")]
+             "mesh, step by maxCo alone", "sienna", "^"),
+            ("fbmSemiImplicitBackward", "fbmFoam, semiImplicit with "
+             "backward", "tab:red", "v"),
+            ("fbmSemiImplicitBackwardCoOnly", "fbmFoam semiImplicit "
+             "backward, step by maxCo alone", "salmon", "v"),
+            ("fbmSemiImplicitBackwardGraded", "fbmFoam semiImplicit "
+             "backward, graded mesh", "darkred", "v"),
+            ("fbmSemiImplicitBackwardGradedCoOnly", "fbmFoam semiImplicit "
+             "backward, graded mesh, step by maxCo alone", "indianred",
+             "v")]
 floor = 0.02
 if bfRows:
     for method, lab, colour, marker in accuracy:
