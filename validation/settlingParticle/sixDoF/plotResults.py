@@ -473,13 +473,13 @@ label = {
     "fbmFoamDamped": "fbmFoam, contact scaled + dashpot",
     "fbmOuter3": "fbmFoam, 3 outer correctors",
     "fbmExplicit": "fbmFoam, explicit, extrapolated, Euler",
-    "fbmBackward": "fbmFoam, tutorial (explicit, extrapolated, backward)",
-    "fbmBackwardCoOnly": "fbmFoam, tutorial, step by maxCo alone",
-    "fbmBackwardGraded": "fbmFoam, tutorial, graded mesh",
-    "fbmBackwardGradedCoOnly": "fbmFoam, tutorial, graded mesh, step by "
+    "fbmBackward": "fbmFoam, explicit, extrapolated, backward",
+    "fbmBackwardCoOnly": "fbmFoam, explicit backward, step by maxCo alone",
+    "fbmBackwardGraded": "fbmFoam, explicit backward, graded mesh",
+    "fbmBackwardGradedCoOnly": "fbmFoam, explicit backward, graded mesh, step by "
                                "maxCo alone",
     "fbmSemiImplicit": "fbmFoam, semiImplicit",
-    "fbmSemiImplicitBackward": "fbmFoam, semiImplicit, backward",
+    "fbmSemiImplicitBackward": "fbmFoam, tutorial (semiImplicit, backward)",
     "fbmSemiImplicitBackwardCoOnly": "fbmFoam, semiImplicit, backward, step "
                                      "by maxCo alone",
     "fbmSemiImplicitBackwardGraded": "fbmFoam, semiImplicit, backward, "
@@ -571,13 +571,13 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
             ("fbmExplicit", "fbmFoam, 1 corrector, extrapolated, "
              "explicit, Euler (the tutorial until 2026-12-05)", "tab:green",
              "D"),
-            ("fbmBackward", "fbmFoam, tutorial: the same with backward",
+            ("fbmBackward", "fbmFoam, explicit: the same with backward",
              "black", "P"),
-            ("fbmBackwardCoOnly", "fbmFoam tutorial (backward), step by "
+            ("fbmBackwardCoOnly", "fbmFoam explicit backward, step by "
              "maxCo 0.5 alone", "dimgray", "P"),
-            ("fbmBackwardGraded", "fbmFoam tutorial (backward), graded mesh",
+            ("fbmBackwardGraded", "fbmFoam explicit backward, graded mesh",
              "darkgoldenrod", "P"),
-            ("fbmBackwardGradedCoOnly", "fbmFoam tutorial (backward), graded "
+            ("fbmBackwardGradedCoOnly", "fbmFoam explicit backward, graded "
              "mesh, step by maxCo alone", "goldenrod", "P"),
             ("fbmSemiImplicit", "fbmFoam, the same with coupling "
              "semiImplicit", "tab:purple", "^"),
@@ -595,8 +595,8 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
              "tab:brown", "^"),
             ("fbmSemiImplicitGradedCoOnly", "fbmFoam semiImplicit, graded "
              "mesh, step by maxCo alone", "sienna", "^"),
-            ("fbmSemiImplicitBackward", "fbmFoam, semiImplicit with "
-             "backward", "tab:red", "v"),
+            ("fbmSemiImplicitBackward", "fbmFoam, tutorial since 2026-12-05: "
+             "semiImplicit, backward", "tab:red", "v"),
             ("fbmSemiImplicitBackwardCoOnly", "fbmFoam semiImplicit "
              "backward, step by maxCo alone", "salmon", "v"),
             ("fbmSemiImplicitBackwardGraded", "fbmFoam semiImplicit "
