@@ -89,6 +89,34 @@ void correctCoupled
     }
 }
 
+// A zero field of the mesh, not registered and not written: the scratch
+// fields of the pressure step
+template<class Type>
+Foam::tmp<Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>>
+scratchField
+(
+    const Foam::word& name,
+    const Foam::fvMesh& mesh,
+    const Foam::dimensionSet& dims
+)
+{
+    using namespace Foam;
+    return tmp<GeometricField<Type, fvPatchField, volMesh>>::New
+    (
+        IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensioned<Type>(dims, Zero)
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -476,33 +504,10 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     // flux through the body's interface proportional to the step that
     // stayed in a steady state: the settling disk at R/h 6 (level 4,
     // backward) settled 0.27 % slower at its step than at half of it
-    volScalarField wTau
-    (
-        IOobject
-        (
-            "wTau",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedScalar(rAtU.dimensions(), Zero)
-    );
+    volScalarField wTau(scratchField<scalar>("wTau", mesh, rAtU.dimensions()));
     volVectorField dRigid
     (
-        IOobject
-        (
-            "dRigid",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedVector(HbyA.dimensions(), Zero)
+        scratchField<vector>("dRigid", mesh, HbyA.dimensions())
     );
     scalarField& rAtUi = rAtU.primitiveFieldRef();
     scalarField& wTaui = wTau.primitiveFieldRef();
