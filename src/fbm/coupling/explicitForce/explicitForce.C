@@ -116,7 +116,7 @@ void Foam::fbm::couplingModels::explicitForce::constrain
     fvMatrix<vector>& UEqn
 ) const
 {
-    limit_.update(UEqn, system_.fb(), free_);
+    limit_.update(UEqn, system_.fb(), free_, system_.rate());
 }
 
 

@@ -438,7 +438,7 @@ void Foam::fbm::couplingModels::semiImplicit::constrain
     // The damping mass of this step and the viscous limit of the next,
     // both read off the momentum matrix
     inertia_.measureDamping(UEqn, heavy_);
-    limit_.update(UEqn, system_.fb(), heavy_);
+    limit_.update(UEqn, system_.fb(), heavy_, system_.rate());
 }
 
 

@@ -15,6 +15,7 @@ License
 #include "fvMatrices.H"
 #include "volFields.H"
 #include "emptyFvPatch.H"
+#include "fluidRate.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -122,7 +123,8 @@ void Foam::fbm::viscousStepLimit::update
 (
     const fvMatrix<vector>& UEqn,
     const fictitiousBoundary& fb,
-    const boolList& selected
+    const boolList& selected,
+    const fluidRate* rate
 )
 {
     if (!active())
@@ -137,14 +139,19 @@ void Foam::fbm::viscousStepLimit::update
     const scalarField& V = mesh.V();
     const scalar dt = mesh.time().deltaTValue();
 
+    // The inertial part of the diagonal is c V/dt: c = 1 + w of the
+    // fluid's time scheme (1 for Euler, 1.5 for backward at a constant
+    // step)
+    const scalar c = 1 + (rate ? rate->weight() : 0);
+
     // Over the bodies' cells, the ratio of the diagonal's viscous and
-    // convective part to its inertial part V/dt
+    // convective part to its inertial part c V/dt
     scalar ratio = 0;
     for (const label celli : fb.activeCells())
     {
         const label bi = label(id[celli]);
         if (bi < 0 || !selected[bi]) continue;
-        ratio = max(ratio, (diag[celli] - lambda[celli])*dt/V[celli] - 1);
+        ratio = max(ratio, (diag[celli] - lambda[celli])*dt/(c*V[celli]) - 1);
     }
     reduce(ratio, maxOp<scalar>());
 
