@@ -233,6 +233,14 @@ def fbmSetting(run, key, default=""):
     return value or default
 
 
+def caseKey(row):
+    """Sort key of a csv row, the order runs() lists its runs in"""
+    parsed = parseCase(row[0])
+    if not parsed or parsed[3] is None:
+        return (1e9, row[0], 0)
+    return (caseOrder(parsed[0]), parsed[0], parsed[3])
+
+
 def collect(runsDir=RUNS, suffix=""):
     """Write results<suffix>.csv and runInfo<suffix>.csv from runsDir"""
     results, info = [], []
@@ -268,6 +276,24 @@ def collect(runsDir=RUNS, suffix=""):
             "%.2g" % max(abs(w) for w in h["wz"][:n]),
             dragNoise(h, n, uMax),
         ])
+    # The rows of the existing files whose run is not in runsDir stay as
+    # they were (a rerun of some levels or cases keeps the others)
+    done = {r[0] for r in results}
+    kept = []
+    for file, rows in (("results%s.csv" % suffix, results),
+                       ("runInfo%s.csv" % suffix, info)):
+        path = os.path.join(HERE, file)
+        if os.path.exists(path):
+            with open(path, newline="") as f:
+                for old in list(csv.reader(f))[1:]:
+                    if old and old[0] not in done:
+                        rows.append(old)
+                        if file.startswith("results"):
+                            kept.append(old[0])
+        rows.sort(key=caseKey)
+    if kept:
+        print("Kept from results%s.csv (not in %s): %s"
+              % (suffix, runsDir, " ".join(kept)))
     for file, header, rows in (("results%s.csv" % suffix, RESULTS_HEADER, results),
                                ("runInfo%s.csv" % suffix, INFO_HEADER, info)):
         with open(os.path.join(HERE, file), "w", newline="") as f:

@@ -102,6 +102,7 @@ import glob
 import math
 import os
 import re
+from re import match as reMatch
 import sys
 
 R = 0.125
@@ -274,6 +275,14 @@ order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmSemiImplicitBackwardCoOnly": 19,
          "fbmSemiImplicitBackwardGraded": 20,
          "fbmSemiImplicitBackwardGradedCoOnly": 21}
+# Allrun -viscousRatio: the tutorial with maxViscousRatio set (VR<ratio>,
+# '.' as 'p'), after the others in ascending ratio
+for _run in glob.glob("runs/fbmSemiImplicitBackwardVR*-L*") + \
+        ([r["method"] for r in csv.DictReader(open("results.csv"))]
+         if os.path.exists("results.csv") else []):
+    _m = re.search(r"(fbmSemiImplicitBackwardVR(\d+(?:p\d+)?))", _run)
+    if _m:
+        order[_m.group(1)] = 22 + float(_m.group(2).replace("p", "."))/100
 
 runs = []
 repeats = []
@@ -324,6 +333,15 @@ print(open("results.csv").read())
 # Repeated runs: the first run and its repeats
 timingColumns = ["method", "level", "tag", "Re_max", "cpu_to_2d_s", "cpu_s",
                  "commit"]
+# The repeats of the existing timing.csv whose run is not in runs/ stay
+# (as results.csv's rows do)
+if os.path.exists("timing.csv"):
+    present = {(m, l, t) for m, l, t, _ in repeats}
+    for old in csv.DictReader(open("timing.csv")):
+        key = (old["method"], int(old["level"]), old["tag"])
+        if old["tag"] != "first" and key not in present \
+                and old["method"] in order:
+            repeats.append(key + ({c: old.get(c, "") for c in timingColumns},))
 if repeats:
     with open("timing.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=timingColumns, restval="",
@@ -496,6 +514,12 @@ label = {
     "fbmSemiImplicitGradedCoOnly": "fbmFoam, semiImplicit, graded mesh, "
                                    "step by maxCo alone",
 }
+# Allrun -viscousRatio
+for _m in order:
+    _v = re.match(r"fbmSemiImplicitBackwardVR(.*)$", _m)
+    if _v:
+        label[_m] = ("fbmFoam, tutorial, maxViscousRatio %s"
+                     % _v.group(1).replace("p", "."))
 # The free-fall runs: one colour per method, the level in the line style
 methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
                 "fbmSemiImplicit": "tab:purple",
@@ -672,6 +696,26 @@ if bfRows:
                    color="navy", lw=1, alpha=0.7,
                    label="2 x body-fitted CPU, step by maxCo alone: the "
                          "goal of the CoOnly rows")
+    # The tutorial at level 5 with the viscous limit's ratio set
+    # (Allrun -viscousRatio) beside its default (1.6): one line over the
+    # ratio
+    vr = []
+    for r in rows:
+        v = reMatch(r"fbmSemiImplicitBackward(?:VR(.*))?$", r["method"])
+        if v and str(r["level"]) == "5" and r["Re_max"]:
+            vr.append((float(r["cpu_to_2d_s"]),
+                       100*abs(float(r["Re_max"])/reRef - 1),
+                       (v.group(1) or "1.6").replace("p", ".")))
+    if len(vr) > 1:
+        vr.sort()
+        ax3.loglog([p[0] for p in vr], [p[1] for p in vr], ":",
+                   color="tab:red", lw=1.2,
+                   label="fbmFoam, tutorial at L5, maxViscousRatio "
+                         "(default 1.6) as marked")
+        for c, e, ratio in vr:
+            ax3.loglog(c, e, "v", color="tab:red", ms=7, mfc="white")
+            ax3.annotate("L5, %s" % ratio, (c, e), textcoords="offset points",
+                         xytext=(5, -10), fontsize=7, color="tab:red")
     ax3.set_ylim(floor, 30)
 ax3.set_xlabel("CPU time from release to gap = 2 d [s]")
 ax3.set_ylabel("|Re_max / Re_max(body-fitted L%d) - 1| [%%]"
@@ -686,5 +730,5 @@ fig.suptitle("Settling disk, nu = 0.1, rho_s = 1.5: stock OpenFOAM "
              "body-fitted (pimpleFoam + sixDoF, morphing mesh) vs fbmFoam",
              fontsize=11)
 fig.tight_layout()
-fig.savefig("sixDoF.png", dpi=110)
+fig.savefig("sixDoF.png", dpi=110, bbox_inches="tight")
 print("sixDoF.png written")
