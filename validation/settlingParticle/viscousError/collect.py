@@ -22,6 +22,8 @@ if os.path.exists("results.csv"):
     rows = {r["run"]: r for r in csv.DictReader(open("results.csv"))}
 for run in sorted(glob.glob("runs/*")):
     name = os.path.basename(run)
+    if not re.match(r"(SB|Bc|B)-r", name):
+        continue
     dat = os.path.join(run, "postProcessing/fbmBodies/0/particle.dat")
     log = os.path.join(run, "log.fbmFoam")
     if not os.path.exists(dat) or not os.path.exists(log):
@@ -59,3 +61,72 @@ with open("results.csv", "w", newline="") as f:
     for name in sorted(rows, key=lambda n: (n[:2] != "SB", n)):
         w.writerow({c: rows[name][c] for c in COLUMNS})
 print(open("results.csv").read())
+
+
+def keep(path, key):
+    """The rows of an existing csv by their first column"""
+    if not os.path.exists(path):
+        return {}
+    return {r[key]: r for r in csv.DictReader(open(path))}
+
+
+# The settling disk as the tutorial runs it, with 2, 3 or 4 correctors
+disk = keep("disk4.csv", "run")
+for run in sorted(glob.glob("runs/disk4-n*")):
+    name = os.path.basename(run)
+    dat = os.path.join(run, "postProcessing/fbmBodies/0/particle.dat")
+    log = os.path.join(run, "log.fbmFoam")
+    if not os.path.exists(dat) or not os.path.exists(log):
+        continue
+    d = np.array([[float(v) for v in l.split()] for l in open(dat)
+                  if not l.startswith("#")])
+    y, u = d[:, 8], np.hypot(d[:, 10], d[:, 11])
+    u = u[(y - R) >= 2*D]
+    cpu = re.findall(r"^ExecutionTime = (\S+)", open(log).read(), re.M)
+    disk[name] = {"run": name, "nCorrectors": name.split("-n")[1],
+                  "Re_max": "%.4f" % (RHO_S*u.max()*D/0.1),
+                  "cpu_s": cpu[-1] if cpu else ""}
+if disk:
+    with open("disk4.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["run", "nCorrectors", "Re_max",
+                                          "cpu_s"])
+        w.writeheader()
+        for name in sorted(disk):
+            w.writerow(disk[name])
+    print(open("disk4.csv").read())
+
+# The resting bed: the disks' kinetic energy at t = 0.1 and 0.6
+import sys  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "../../../bin"))
+import fbmOutput  # noqa: E402
+
+bed = keep("bed.csv", "run")
+for run in sorted(glob.glob("runs/bed-*")):
+    name = os.path.basename(run)
+    try:
+        s = fbmOutput.summary(run)
+    except Exception as err:                # no record: not run to the end
+        print("%s: skipped (%s)" % (name, err), file=sys.stderr)
+        continue
+    t, ke = s["Time"], s["kineticEnergy"]
+    if t[-1] < 0.6 - 1e-9:
+        continue
+    at = lambda x: ke[np.argmax(t >= x - 1e-9)]
+    cpu = re.findall(r"^ExecutionTime = (\S+)",
+                     open(os.path.join(run, "log.fbmFoam")).read(), re.M)
+    bed[name] = {"run": name,
+                 "scheme": "backward" if name.startswith("bed-B") else "Euler",
+                 "nCorrectors": name.split("-n")[1],
+                 "ke_0.1": "%.4g" % at(0.1), "ke_0.6": "%.4g" % at(0.6),
+                 "ratio": "%.4g" % (at(0.6)/at(0.1)),
+                 "cpu_s": cpu[-1] if cpu else ""}
+if bed:
+    with open("bed.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["run", "scheme", "nCorrectors",
+                                          "ke_0.1", "ke_0.6", "ratio",
+                                          "cpu_s"])
+        w.writeheader()
+        for name in sorted(bed):
+            w.writerow(bed[name])
+    print(open("bed.csv").read())
