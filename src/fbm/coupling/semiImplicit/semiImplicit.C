@@ -34,6 +34,17 @@ namespace couplingModels
 }
 }
 
+const Foam::Enum
+<
+    Foam::fbm::couplingModels::semiImplicit::impulseForm
+>
+Foam::fbm::couplingModels::semiImplicit::impulseFormNames
+({
+    { impulseForm::final, "final" },
+    { impulseForm::solved, "solved" },
+});
+
+
 // Largest share of the body's inertia that the lagged direct force may
 // take (below 1: the stability bound of a lagged mass; 0.9 leaves the
 // bodies down to rho_s/rho_f of about 1.1 untouched)
@@ -256,6 +267,7 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
 )
 :
     couplingModel(dict, system),
+    impulse_(impulseForm::final),
     heavy_(system.bodies().size(), false),
     timeIndex_(-1),
     pressureForce_(system.bodies().size(), Zero),
@@ -279,6 +291,29 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
 {
     rejectContactProjection();
     rejectAddedMassCoeff();
+
+    // The pressure force the bodies take at the end of a step
+    const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
+    const bool impulseGiven = coeffs.found("impulse", keyType::LITERAL);
+    if (impulseGiven)
+    {
+        const word form(coeffs.get<word>("impulse", keyType::LITERAL));
+        if (!impulseFormNames.found(form))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "impulse " << form << " in " << coeffs.name()
+                << " is not one of "
+                << flatOutput(impulseFormNames.toc()) << nl
+                << "    final: the pressure force of the final pressure;"
+                << " solved: the one the last pressure corrector was"
+                << " solved with"
+                << exit(FatalIOError);
+        }
+        impulse_ = impulseFormNames[form];
+    }
+    Info<< "fbm: coupling " << type() << ": impulse "
+        << impulseFormNames[impulse_] << (impulseGiven ? "" : " (default)")
+        << nl;
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -558,8 +593,23 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
 
     PtrList<body>& bodies = system_.bodies();
     const volVectorField gradP(fvc::grad(p));
+
+    // The pressure force of the step: that of the final pressure, or the
+    // one the last corrector's pressure equation was solved with, so that
+    // the bodies move as the fluid's flux around them says (impulse
+    // solved: the rest of the final pressure's force reaches them a step
+    // later through the force model's force, and the impulses telescope
+    // over the steps as before)
     List<vector> P, Q;
-    pressureForces(gradP, P, Q);
+    if (impulse_ == impulseForm::solved)
+    {
+        P = lastForce_;
+        Q = lastTorque_;
+    }
+    else
+    {
+        pressureForces(gradP, P, Q);
+    }
 
     // The bodies' new velocities: the pressure force of the last step
     // replaced by that of this one (and the accelerations of the step)
