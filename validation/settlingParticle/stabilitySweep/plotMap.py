@@ -20,13 +20,14 @@ for r in csv.DictReader(open(os.path.join(here, 'sweep.csv'))):
 COUPLINGS = {'P': 'coupling rigidProjection', 'S': 'coupling semiImplicit',
              'B': 'explicit, addedMassCoeff C_a = 1, backward time scheme '
                   '(the tutorial since 2026-12-05; the others Euler)',
-             'SB': 'coupling semiImplicit, backward time scheme'}
+             'SB': 'coupling semiImplicit, backward time scheme',
+             'SBs': 'coupling semiImplicit, backward, impulse solved'}
 
 
 def key(c):
     """Coupling label: C_a as a number, then 'P' (rigidProjection), 'S'
-    (semiImplicit), 'B' (C_a 1 with backward) and 'SB' (semiImplicit
-    with backward)."""
+    (semiImplicit), 'B' (C_a 1 with backward), 'SB' (semiImplicit
+    with backward) and 'SBs' (the same with impulse solved)."""
     return (1, c) if c in COUPLINGS else (0, float(c))
 
 

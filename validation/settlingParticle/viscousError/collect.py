@@ -1,14 +1,15 @@
 """The tables of the runs of Allrun (the error of semiImplicit in the
 viscous number of its step):
-- results.csv (runs SB-*, B-*, Bc-*): per run the coupling,
-  maxViscousRatio, the PISO correctors, the smoothed and the raw maximum
+- results.csv (runs SB-*, B-*, Bc-*): per run the coupling, its impulse
+  (semiImplicit's; a run name ending in -s: solved), maxViscousRatio, the
+  PISO correctors, the smoothed and the raw maximum
   speed while the gap to the bottom wall is at least 2 d (as
   Re = rho_s U d/mu), the steps, the steps the coupling's limit set, the
   CPU time and the oscillation index of the speed over the last 50 steps
   of that window;
-- disk4.csv (runs disk4-n*): Re_max and the CPU time;
-- bed.csv (runs bed-*): the disks' kinetic energy at t = 0.1 and 0.6 and
-  their ratio.
+- disk4.csv (runs disk4-n*): the impulse, Re_max and the CPU time;
+- bed.csv (runs bed-*): the impulse, the disks' kinetic energy at t = 0.1
+  and 0.6 and their ratio.
 A run not under runs/ keeps its row of the existing file."""
 import csv
 import glob
@@ -24,7 +25,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 import fbmOutput  # noqa: E402
 
 RHO_S, D, NU, R = 1.5, 0.25, 0.3, 0.125
-COLUMNS = ["run", "coupling", "maxViscousRatio", "nCorrectors", "consistent",
+COLUMNS = ["run", "coupling", "impulse", "maxViscousRatio", "nCorrectors", "consistent",
            "Re_smooth", "Re_raw", "steps", "limited", "cpu_s", "osc_pct"]
 
 
@@ -32,7 +33,18 @@ def keep(path):
     """The rows of an existing csv by their run"""
     if not os.path.exists(path):
         return {}
-    return {r["run"]: r for r in csv.DictReader(open(path))}
+    rows = {r["run"]: r for r in csv.DictReader(open(path))}
+    for r in rows.values():                 # rows from before the column
+        r.setdefault("impulse", impulse(r["run"]))
+    return rows
+
+
+def impulse(name):
+    """semiImplicit's impulse of a run: solved for a name ending in -s,
+    none for the explicit coupling's runs (B-*, Bc-*)"""
+    if re.match(r"Bc?-", name):
+        return ""
+    return "solved" if name.endswith("-s") else "final"
 
 
 def write(path, columns, rows, key=None):
@@ -71,7 +83,7 @@ def fall(run):
 rows = keep("results.csv")
 for run in sorted(glob.glob("runs/*")):
     name = os.path.basename(run)
-    m = re.match(r"(SB|Bc|B)-r([0-9.]+)(?:-n(\d+))?$", name)
+    m = re.match(r"(SB|Bc|B)-r([0-9.]+)(?:-n(\d+))?(?:-s)?$", name)
     record = fall(run) if m else None
     if record is None:
         continue
@@ -84,6 +96,7 @@ for run in sorted(glob.glob("runs/*")):
     rows[name] = {
         "run": name,
         "coupling": "semiImplicit" if m.group(1) == "SB" else "explicit",
+        "impulse": impulse(name) if m.group(1) == "SB" else "",
         "maxViscousRatio": m.group(2),
         "nCorrectors": re.search(r"^\s*nCorrectors\s+(\d+);", fvs, re.M).group(1),
         "consistent": "yes" if re.search(r"^\s*consistent\s+yes;", fvs, re.M)
@@ -95,7 +108,8 @@ for run in sorted(glob.glob("runs/*")):
         "cpu_s": lastCpu(text),
         "osc_pct": "%.3f" % (100*math.sqrt((dev**2).mean())/w.mean()),
     }
-write("results.csv", COLUMNS, rows, key=lambda n: (n[:2] != "SB", n))
+write("results.csv", COLUMNS, rows,
+      key=lambda n: (n[:2] != "SB", n.endswith("-s"), n))
 
 # The settling disk as the tutorial runs it (nu 0.1), with 2, 3 or 4
 # correctors
@@ -106,10 +120,11 @@ for run in sorted(glob.glob("runs/disk4-n*")):
         continue
     name = os.path.basename(run)
     _, u, text = record
-    disk[name] = {"run": name, "nCorrectors": name.split("-n")[1],
+    disk[name] = {"run": name, "impulse": impulse(name),
+                  "nCorrectors": re.search(r"-n(\d+)", name).group(1),
                   "Re_max": "%.4f" % (RHO_S*u.max()*D/0.1),
                   "cpu_s": lastCpu(text)}
-write("disk4.csv", ["run", "nCorrectors", "Re_max", "cpu_s"], disk)
+write("disk4.csv", ["run", "impulse", "nCorrectors", "Re_max", "cpu_s"], disk)
 
 # The resting bed: the disks' kinetic energy at t = 0.1 and 0.6
 bed = keep("bed.csv")
@@ -126,9 +141,10 @@ for run in sorted(glob.glob("runs/bed-*")):
     at = lambda x: ke[np.argmax(t >= x - 1e-9)]
     bed[name] = {"run": name,
                  "scheme": "backward" if name.startswith("bed-B") else "Euler",
-                 "nCorrectors": name.split("-n")[1],
+                 "impulse": impulse(name),
+                 "nCorrectors": re.search(r"-n(\d+)", name).group(1),
                  "ke_0.1": "%.4g" % at(0.1), "ke_0.6": "%.4g" % at(0.6),
                  "ratio": "%.4g" % (at(0.6)/at(0.1)),
                  "cpu_s": lastCpu(open(os.path.join(run, "log.fbmFoam")).read())}
-write("bed.csv", ["run", "scheme", "nCorrectors", "ke_0.1", "ke_0.6", "ratio",
+write("bed.csv", ["run", "scheme", "impulse", "nCorrectors", "ke_0.1", "ke_0.6", "ratio",
                   "cpu_s"], bed)
