@@ -40,6 +40,16 @@ Foam::fbm::couplingModels::semiImplicit::impulseFormNames
     { impulseForm::solved, "solved" },
 });
 
+const Foam::Enum
+<
+    Foam::fbm::couplingModels::semiImplicit::bodyScheme
+>
+Foam::fbm::couplingModels::semiImplicit::bodySchemeNames
+({
+    { bodyScheme::fluid, "fluid" },
+    { bodyScheme::Euler, "Euler" },
+});
+
 
 // Largest share of the body's inertia that the lagged direct force may
 // take (below 1: the stability bound of a lagged mass; 0.9 leaves the
@@ -52,6 +62,46 @@ const Foam::scalar
 Foam::fbm::couplingModels::semiImplicit::defaultMaxViscousRatio_ = 1.6;
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// An optional word of the coefficients that must be one of names: the
+// default when absent, a FatalIOError naming the keyword, the file and the
+// allowed words (with what they mean) when it is not one of them
+template<class Form>
+Form readForm
+(
+    const Foam::dictionary& coeffs,
+    const Foam::word& key,
+    const Foam::Enum<Form>& names,
+    const Form deflt,
+    const char* meaning,
+    bool& given
+)
+{
+    using namespace Foam;
+    given = coeffs.found(key, keyType::LITERAL);
+    if (!given)
+    {
+        return deflt;
+    }
+    const word form(coeffs.get<word>(key, keyType::LITERAL));
+    if (!names.found(form))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << key << " " << form << " in " << coeffs.name()
+            << " is not one of " << flatOutput(names.toc()) << nl
+            << "    " << meaning
+            << exit(FatalIOError);
+    }
+    return names[form];
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::scalar Foam::fbm::couplingModels::semiImplicit::shellRate() const
@@ -61,19 +111,26 @@ Foam::scalar Foam::fbm::couplingModels::semiImplicit::shellRate() const
 }
 
 
+Foam::scalar Foam::fbm::couplingModels::semiImplicit::bodyRate() const
+{
+    return bodyScheme_ == bodyScheme::fluid ? shellRate() : 1;
+}
+
+
 Foam::scalar Foam::fbm::couplingModels::semiImplicit::responseTime
 (
     const label bi
 ) const
 {
     // dt rho_f/rho of body and shell together: mass M + m in the volume
-    // V_b + m/rho_f (the shell's inertia at the fluid's rate)
+    // V_b + m/rho_f (the shell's inertia at the fluid's rate, the body's
+    // at its own, bodyRate())
     const body& b = system_.bodies()[bi];
     const scalar Vb = b.shape().volume();
     return
         system_.mesh().time().deltaTValue()
        *(system_.rhoFluid()*Vb + inertia_.shellMass(bi))
-       /inertia_.totalMass(bi, b.rho()*Vb, shellRate());
+       /inertia_.totalMass(bi, bodyRate()*b.rho()*Vb, shellRate());
 }
 
 
@@ -88,7 +145,10 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::rigidImpulse
     const body& b = system_.bodies()[bi];
     const scalar dt = system_.mesh().time().deltaTValue();
     const scalar M =
-        inertia_.totalMass(bi, b.rho()*b.shape().volume(), shellRate());
+        inertia_.totalMass
+        (
+            bi, bodyRate()*b.rho()*b.shape().volume(), shellRate()
+        );
     return
         cmptMultiply(planeMask_, dt*P/M)
       + (angularImpulse(bi, dt*Q) ^ (x - b.centre()));
@@ -106,7 +166,10 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
     {
         return Zero;
     }
-    const symmTensor I(inertia_.totalInertia(bi, b.inertia(), shellRate()));
+    const symmTensor I
+    (
+        inertia_.totalInertia(bi, bodyRate()*b.inertia(), shellRate())
+    );
     if (cmptSum(axisMask_) == 1)
     {
         // 2D: about the empty direction, a principal direction of I
@@ -126,6 +189,7 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
 :
     couplingModel(dict, system),
     impulse_(impulseForm::final),
+    bodyScheme_(bodyScheme::fluid),
     heavy_(system.bodies().size(), false),
     timeIndex_(-1),
     pressureForce_(system.bodies().size(), Zero),
@@ -150,28 +214,28 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     rejectContactProjection();
     rejectAddedMassCoeff();
 
-    // The pressure force the bodies take at the end of a step
+    // The pressure force the bodies take at the end of a step, and the
+    // time scheme of their velocity
     const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-    const bool impulseGiven = coeffs.found("impulse", keyType::LITERAL);
-    if (impulseGiven)
-    {
-        const word form(coeffs.get<word>("impulse", keyType::LITERAL));
-        if (!impulseFormNames.found(form))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "impulse " << form << " in " << coeffs.name()
-                << " is not one of "
-                << flatOutput(impulseFormNames.toc()) << nl
-                << "    final: the pressure force of the final pressure;"
-                << " solved: the one the last pressure corrector was"
-                << " solved with"
-                << exit(FatalIOError);
-        }
-        impulse_ = impulseFormNames[form];
-    }
+    bool impulseGiven = false, schemeGiven = false;
+    impulse_ = readForm
+    (
+        coeffs, "impulse", impulseFormNames, impulseForm::final,
+        "final: the pressure force of the final pressure; solved: the one"
+        " the last pressure corrector was solved with",
+        impulseGiven
+    );
+    bodyScheme_ = readForm
+    (
+        coeffs, "bodyScheme", bodySchemeNames, bodyScheme::fluid,
+        "fluid: the bodies' velocity at the rate of the fluid's ddt(U)"
+        " (BDF2 with backward); Euler: Euler's whatever the fluid's",
+        schemeGiven
+    );
     Info<< "fbm: coupling " << type() << ": impulse "
         << impulseFormNames[impulse_] << (impulseGiven ? "" : " (default)")
-        << nl;
+        << ", bodyScheme " << bodySchemeNames[bodyScheme_]
+        << (schemeGiven ? "" : " (default)") << nl;
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -247,6 +311,11 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
     // dt (m_s (D^n + w a^n) + m_d a^n), m_d the damping mass, whose lagged
     // force is a velocity's response, not a rate; Euler (w = w^n = 0) is
     // the line above, bit for bit
+    //
+    // With bodyScheme fluid the body's own velocity takes the fluid's rate
+    // too, M D = F (BDF2 with backward): its mass counts 1 + w and its
+    // last acceleration w M a^n joins the right-hand side (system_.advance()
+    // stepped U* with Euler's M (U* - U^n) = dt F)
     const fluidRate* rate = system_.rate();
     const scalar w = rate ? rate->weight() : 0;
     const scalar w0 = rate ? rate->weight0() : 0;
@@ -257,7 +326,7 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
         forAll(bodies, bi)
         {
             const scalar m = inertia_.mass(bi);
-            if (!heavy_[bi] || m <= 0) continue;
+            if (!heavy_[bi] || (m <= 0 && bodyRate() == 1)) continue;
 
             body& b = bodies[bi];
             bodyState& s = b.state();
@@ -269,12 +338,13 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
               ? (M*(s.U() - U0[bi]) + dt*m*a0[bi])/(M + m)
               : (
                     M*(s.U() - U0[bi])
+                  + dt*(bodyRate() - 1)*M*a0[bi]
                   + dt*
                     (
                         ms*((1 + w0)*a0[bi] - w0*a00[bi] + w*a0[bi])
                       + (m - ms)*a0[bi]
                     )
-                )/inertia_.totalMass(bi, M, 1 + w)
+                )/inertia_.totalMass(bi, bodyRate()*M, 1 + w)
             );
             s.U() = U0[bi] + cmptMultiply(planeMask_, dU);
             s.acceleration() = (s.U() - U0[bi])/dt;
@@ -287,6 +357,7 @@ bool Foam::fbm::couplingModels::semiImplicit::beforeFlow()
                   ? (b.inertia() & (s.omega() - omega0[bi]))
                   + dt*(inertia_.inertia(bi) & omegaDot0[bi])
                   : (b.inertia() & (s.omega() - omega0[bi]))
+                  + dt*(bodyRate() - 1)*(b.inertia() & omegaDot0[bi])
                   + dt*
                     (
                         (

@@ -402,7 +402,8 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     {
         if (!heavy_[bi] || pushedMass[bi] <= 0) continue;
         const body& b = bodies[bi];
-        const scalar M = inertia_.totalMass(bi, b.rho()*b.shape().volume(), c);
+        const scalar M =
+            inertia_.totalMass(bi, bodyRate()*b.rho()*b.shape().volume(), c);
         const scalar f = min(scalar(1), maxDirectMass_*M/(c*pushedMass[bi]));
         directForce_[bi] *= f;
         directTorque_[bi] *= f;
