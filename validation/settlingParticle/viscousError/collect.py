@@ -1,14 +1,16 @@
 """The tables of the runs of Allrun (the error of semiImplicit in the
 viscous number of its step):
 - results.csv (runs SB-*, B-*, Bc-*): per run the coupling, its impulse
-  (semiImplicit's; a run name ending in -s: solved), maxViscousRatio, the
+  (semiImplicit's; a run name ending in -s: solved), its bodyScheme (a
+  run name ending in -f: fluid, else Euler), maxViscousRatio, the
   PISO correctors, the smoothed and the raw maximum
   speed while the gap to the bottom wall is at least 2 d (as
   Re = rho_s U d/mu), the steps, the steps the coupling's limit set, the
   CPU time and the oscillation index of the speed over the last 50 steps
   of that window;
-- disk4.csv (runs disk4-n*): the impulse, Re_max and the CPU time;
-- bed.csv (runs bed-*): the impulse, the disks' kinetic energy at t = 0.1
+- disk4.csv (runs disk4-n*): the impulse, the bodyScheme, Re_max and the
+  CPU time;
+- bed.csv (runs bed-*): the impulse, the bodyScheme, the disks' kinetic energy at t = 0.1
   and 0.6 and their ratio.
 A run not under runs/ keeps its row of the existing file."""
 import csv
@@ -25,7 +27,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 import fbmOutput  # noqa: E402
 
 RHO_S, D, NU, R = 1.5, 0.25, 0.3, 0.125
-COLUMNS = ["run", "coupling", "impulse", "maxViscousRatio", "nCorrectors", "consistent",
+COLUMNS = ["run", "coupling", "impulse", "bodyScheme", "maxViscousRatio", "nCorrectors", "consistent",
            "Re_smooth", "Re_raw", "steps", "limited", "cpu_s", "osc_pct"]
 
 
@@ -36,6 +38,7 @@ def keep(path):
     rows = {r["run"]: r for r in csv.DictReader(open(path))}
     for r in rows.values():                 # rows from before the column
         r.setdefault("impulse", impulse(r["run"]))
+        r.setdefault("bodyScheme", bodyScheme(r["run"]))
     return rows
 
 
@@ -44,7 +47,16 @@ def impulse(name):
     none for the explicit coupling's runs (B-*, Bc-*)"""
     if re.match(r"Bc?-", name):
         return ""
-    return "solved" if name.endswith("-s") else "final"
+    return "solved" if re.sub(r"-f$", "", name).endswith("-s") else "final"
+
+
+def bodyScheme(name):
+    """semiImplicit's bodyScheme of a run: fluid for a name ending in -f,
+    Euler for the others (and Euler's time scheme, bed-E-*, where the two
+    are the same), none for the explicit coupling's runs"""
+    if re.match(r"Bc?-", name):
+        return ""
+    return "fluid" if name.endswith("-f") else "Euler"
 
 
 def write(path, columns, rows, key=None):
@@ -83,7 +95,7 @@ def fall(run):
 rows = keep("results.csv")
 for run in sorted(glob.glob("runs/*")):
     name = os.path.basename(run)
-    m = re.match(r"(SB|Bc|B)-r([0-9.]+)(?:-n(\d+))?(?:-s)?$", name)
+    m = re.match(r"(SB|Bc|B)-r([0-9.]+)(?:-n(\d+))?(?:-s)?(?:-f)?$", name)
     record = fall(run) if m else None
     if record is None:
         continue
@@ -97,6 +109,7 @@ for run in sorted(glob.glob("runs/*")):
         "run": name,
         "coupling": "semiImplicit" if m.group(1) == "SB" else "explicit",
         "impulse": impulse(name) if m.group(1) == "SB" else "",
+        "bodyScheme": bodyScheme(name),
         "maxViscousRatio": m.group(2),
         "nCorrectors": re.search(r"^\s*nCorrectors\s+(\d+);", fvs, re.M).group(1),
         "consistent": "yes" if re.search(r"^\s*consistent\s+yes;", fvs, re.M)
@@ -121,10 +134,11 @@ for run in sorted(glob.glob("runs/disk4-n*")):
     name = os.path.basename(run)
     _, u, text = record
     disk[name] = {"run": name, "impulse": impulse(name),
+                  "bodyScheme": bodyScheme(name),
                   "nCorrectors": re.search(r"-n(\d+)", name).group(1),
                   "Re_max": "%.4f" % (RHO_S*u.max()*D/0.1),
                   "cpu_s": lastCpu(text)}
-write("disk4.csv", ["run", "impulse", "nCorrectors", "Re_max", "cpu_s"], disk)
+write("disk4.csv", ["run", "impulse", "bodyScheme", "nCorrectors", "Re_max", "cpu_s"], disk)
 
 # The resting bed: the disks' kinetic energy at t = 0.1 and 0.6
 bed = keep("bed.csv")
@@ -142,9 +156,10 @@ for run in sorted(glob.glob("runs/bed-*")):
     bed[name] = {"run": name,
                  "scheme": "backward" if name.startswith("bed-B") else "Euler",
                  "impulse": impulse(name),
+                 "bodyScheme": bodyScheme(name),
                  "nCorrectors": re.search(r"-n(\d+)", name).group(1),
                  "ke_0.1": "%.4g" % at(0.1), "ke_0.6": "%.4g" % at(0.6),
                  "ratio": "%.4g" % (at(0.6)/at(0.1)),
                  "cpu_s": lastCpu(open(os.path.join(run, "log.fbmFoam")).read())}
-write("bed.csv", ["run", "scheme", "impulse", "nCorrectors", "ke_0.1", "ke_0.6", "ratio",
+write("bed.csv", ["run", "scheme", "impulse", "bodyScheme", "nCorrectors", "ke_0.1", "ke_0.6", "ratio",
                   "cpu_s"], bed)
