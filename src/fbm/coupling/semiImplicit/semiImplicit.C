@@ -192,6 +192,7 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     bodyScheme_(bodyScheme::fluid),
     heavy_(system.bodies().size(), false),
     timeIndex_(-1),
+    corrector_(0),
     pressureForce_(system.bodies().size(), Zero),
     pressureTorque_(system.bodies().size(), Zero),
     directForce_(system.bodies().size(), Zero),

@@ -124,6 +124,29 @@ void Foam::fbm::couplingModels::semiImplicit::startStep
     lastGradP_ = Zero;
 
     timeIndex_ = system_.mesh().time().timeIndex();
+    corrector_ = 0;
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::reportForceChange
+(
+    const label n,
+    const List<vector>& before,
+    const List<vector>& after
+) const
+{
+    scalar change = 0;
+    scalar size = 0;
+    forAll(after, bi)
+    {
+        if (!heavy_[bi]) continue;
+        change += magSqr(after[bi] - before[bi]);
+        size += magSqr(after[bi]);
+    }
+    Info<< "fbm: semiImplicit: pressure corrector " << n
+        << " changed the bodies' pressure force by "
+        << (size > 0 ? Foam::sqrt(change/size) : scalar(0))
+        << " (relative)" << endl;
 }
 
 
@@ -197,7 +220,17 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
 
     // The pressure force before this corrector
     const volVectorField gradP(fvc::grad(p));
+    List<vector> before;
+    if (debug && !newStep)
+    {
+        before = lastForce_;
+    }
     pressureForces(gradP, lastForce_, lastTorque_);
+    ++corrector_;
+    if (debug && !newStep)
+    {
+        reportForceChange(corrector_ - 1, before, lastForce_);
+    }
 
     if (newStep && !lastStepKnown_)
     {
@@ -293,10 +326,20 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     {
         P = lastForce_;
         Q = lastTorque_;
+        if (debug)
+        {
+            List<vector> Pfinal, Qfinal;
+            pressureForces(gradP, Pfinal, Qfinal);
+            reportForceChange(corrector_, lastForce_, Pfinal);
+        }
     }
     else
     {
         pressureForces(gradP, P, Q);
+        if (debug)
+        {
+            reportForceChange(corrector_, lastForce_, P);
+        }
     }
 
     // The bodies' new velocities: the pressure force of the last step
