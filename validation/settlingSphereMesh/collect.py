@@ -10,7 +10,9 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
                             semiImplicit, explicitExtrap, semiImplicitExtrap,
                             explicitExtrapP, explicitExtrapBackward,
                             semiImplicitExtrapBackward (the backward time
-                            scheme; the others Euler)
+                            scheme, the body stepped by Euler),
+                            semiImplicitExtrapBackwardF (backward, the body
+                            at the fluid's rate; the others Euler)
     predictor               lagged, extrapolated flux (PIMPLE
                             extrapolatePredictor yes, extrapolatePressure
                             no, with minIter 10 for U) or extrapolated
@@ -26,6 +28,12 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
                             (0.2, 0.25] (the sphere near its terminal
                             speed; filters a step-to-step oscillation)
     range_0.2_0.25_pct      (max - min)/mean of |U| over those steps in %
+    fp_last_change, fp_ratio  the runs -n<K> (logged with DebugSwitches
+                            { semiImplicit 1; }): the median over the steps
+                            of the relative change of the pressure force
+                            made by the last pressure corrector, and of its
+                            ratio to the change made by the one before (the
+                            contraction of the pressure step's fixed point)
     y_start, y_end          height of the centre at the first and last step
     bodyCo_max              largest body Courant number |U| dt / h
     cpu_s                   fbmFoam's last ExecutionTime
@@ -73,12 +81,18 @@ COLUMNS = ["run", "body", "coupling", "R_h", "h", "cells", "steps", "t_end",
            "mean_0.2_0.25", "range_0.2_0.25_pct", "y_start", "y_end", "bodyCo_max", "cpu_s", "cpu_ms_step",
            "cpu_us_cellstep", "p_iters_step", "U_sweeps_step",
            "warnings", "warn_t", "warn_ratio", "status", "variant",
-           "predictor"]
+           "predictor", "fp_last_change", "fp_ratio"]
 VARIANTS = ["explicit", "semiImplicit", "explicitExtrap", "semiImplicitExtrap",
             "explicitExtrapP", "explicitExtrapBackward",
-            "semiImplicitExtrapBackward"]
+            "semiImplicitExtrapBackward", "semiImplicitExtrapBackwardF"]
+# The pressure step's fixed point: semiImplicitExtrapBackwardF with more PISO
+# correctors (-n<K>) or a smaller viscous limit (-r<X>); not in
+# convergence.csv or the chart (not every mesh)
+SWEEP = ["semiImplicitExtrapBackwardF-%s-RH%d" % (v, n)
+         for v, n in (("n3", 3), ("n4", 3), ("n6", 3), ("r1.6", 3),
+                      ("n4", 4), ("r1.6", 4))]
 ORDER = ["%s-RH%d" % (v, n) for v in VARIANTS for n in (3, 4, 6)] \
-    + ["disk2D-L4"]
+    + ["disk2D-L4"] + SWEEP
 TIMES = ["0.1", "0.15", "0.25"]
 
 
@@ -105,6 +119,34 @@ def iterations(path, field):
             if m:
                 total += int(m.group(1))
     return total
+
+
+def fixedPoint(path):
+    """(median change of the bodies' pressure force made by the last
+    pressure corrector, median ratio of that change to the one before it)
+    over the steps of a log written with DebugSwitches { semiImplicit 1; }
+    (semiImplicit's reportForceChange); empty strings without it"""
+    steps, step = [], []
+    pattern = re.compile(r"^fbm: semiImplicit: pressure corrector (\d+) "
+                         r"changed the bodies' pressure force by (\S+)")
+    with open(path, errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = "):
+                if step:
+                    steps.append(step)
+                step = []
+                continue
+            m = pattern.match(line)
+            if m:
+                step.append(float(m.group(2)))
+    if step:
+        steps.append(step)
+    steps = [c for c in steps if len(c) >= 2 and c[-2] > 0]
+    if not steps:
+        return "", ""
+    last = sorted(c[-1] for c in steps)
+    ratio = sorted(c[-1]/c[-2] for c in steps)
+    return "%.3g" % last[len(last)//2], "%.3g" % ratio[len(ratio)//2]
 
 
 def viscousWarnings(path):
@@ -199,6 +241,8 @@ def collectRun(run):
            "variant": name.split("-RH")[0] if body == "sphere" else "",
            "predictor": predictor(os.path.join(run, "system/fvSolution"))}
     row["warnings"], row["warn_t"], row["warn_ratio"] = viscousWarnings(
+        os.path.join(run, "log.fbmFoam"))
+    row["fp_last_change"], row["fp_ratio"] = fixedPoint(
         os.path.join(run, "log.fbmFoam"))
     for time in TIMES:
         row["speed_" + time] = at(float(time))
@@ -303,7 +347,7 @@ def main():
         w.writerows(conv)
     for n in ORDER:
         if n in results:
-            print(",".join(str(results[n][c]) for c in COLUMNS))
+            print(",".join(str(results[n].get(c, "")) for c in COLUMNS))
     for r in conv:
         print(r)
     print("Wrote results.csv, history.csv, convergence.csv")

@@ -34,7 +34,11 @@ STYLES = {"explicit": ("-", "o", "explicit, addedMassCoeff 2"),
                                      " flux, backward"),
           "semiImplicitExtrapBackward": ((0, (3, 1, 1, 1)), "P",
                                          "semiImplicit, extrapolated flux,"
-                                         " backward")}
+                                         " backward, body Euler"),
+          "semiImplicitExtrapBackwardF": ((0, (3, 1, 1, 1, 1, 1)), "X",
+                                          "semiImplicit, extrapolated flux,"
+                                          " backward, body at the fluid's"
+                                          " rate")}
 
 
 def read(name):
@@ -47,7 +51,8 @@ def variant(r):
 
 
 def main():
-    results = [r for r in read("results.csv") if r["body"] == "sphere"]
+    results = [r for r in read("results.csv") if r["body"] == "sphere"
+               and variant(r) in STYLES]
     history = read("history.csv")
     conv = read("convergence.csv")
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 5))
