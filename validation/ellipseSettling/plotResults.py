@@ -116,6 +116,14 @@ def fbmHistory(case):
             case, "system/fvSolution")).read(), re.M)
         coupling += "; %s outer corrector%s" % (
             n.group(1), "" if n.group(1) == "1" else "s")
+    ddt = re.search(r"ddtSchemes\s*\{\s*default\s+(\w+)\s*;", open(
+        os.path.join(case, "system/fvSchemes")).read())
+    if ddt and ddt.group(1) != "Euler":
+        coupling += "; " + ddt.group(1)
+    ratio = re.search(r"maxViscousRatio\s+([0-9.eE+-]+)\s*;", open(
+        os.path.join(case, "constant/fbmProperties")).read())
+    if ratio:
+        coupling += "; maxViscousRatio " + ratio.group(1)
     return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 
