@@ -322,24 +322,18 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     // later through the force model's force, and the impulses telescope
     // over the steps as before)
     List<vector> P, Q;
-    if (impulse_ == impulseForm::solved)
-    {
-        P = lastForce_;
-        Q = lastTorque_;
-        if (debug)
-        {
-            List<vector> Pfinal, Qfinal;
-            pressureForces(gradP, Pfinal, Qfinal);
-            reportForceChange(corrector_, lastForce_, Pfinal);
-        }
-    }
-    else
+    if (impulse_ == impulseForm::final || debug)
     {
         pressureForces(gradP, P, Q);
         if (debug)
         {
             reportForceChange(corrector_, lastForce_, P);
         }
+    }
+    if (impulse_ == impulseForm::solved)
+    {
+        P = lastForce_;
+        Q = lastTorque_;
     }
 
     // The bodies' new velocities: the pressure force of the last step
