@@ -12,7 +12,9 @@ Uz wx wy wz; as ../projectionAccuracy/collect.py):
                             semiImplicitExtrapBackward (the backward time
                             scheme, the body stepped by Euler),
                             semiImplicitExtrapBackwardF (backward, the body
-                            at the fluid's rate; the others Euler)
+                            at the fluid's rate; the others Euler),
+                            semiImplicitExtrapBackwardN (as F, with
+                            pressureSolve newton)
     predictor               lagged, extrapolated flux (PIMPLE
                             extrapolatePredictor yes, extrapolatePressure
                             no, with minIter 10 for U) or extrapolated
@@ -84,13 +86,17 @@ COLUMNS = ["run", "body", "coupling", "R_h", "h", "cells", "steps", "t_end",
            "predictor", "fp_last_change", "fp_ratio"]
 VARIANTS = ["explicit", "semiImplicit", "explicitExtrap", "semiImplicitExtrap",
             "explicitExtrapP", "explicitExtrapBackward",
-            "semiImplicitExtrapBackward", "semiImplicitExtrapBackwardF"]
-# The pressure step's fixed point: semiImplicitExtrapBackwardF with more PISO
+            "semiImplicitExtrapBackward", "semiImplicitExtrapBackwardF",
+            "semiImplicitExtrapBackwardN"]
+# The pressure step's fixed point: semiImplicitExtrapBackwardF (and N, with
+# pressureSolve newton) with more PISO
 # correctors (-n<K>) or a smaller viscous limit (-r<X>); not in
 # convergence.csv or the chart (not every mesh)
 SWEEP = ["semiImplicitExtrapBackwardF-%s-RH%d" % (v, n)
          for v, n in (("n3", 3), ("n4", 3), ("n6", 3), ("r1.6", 3),
-                      ("n4", 4), ("r1.6", 4))]
+                      ("n4", 4), ("r1.6", 4))] \
+    + ["semiImplicitExtrapBackwardN-n4-RH3",
+       "semiImplicitExtrapBackwardN-r1.6-RH3"]
 ORDER = ["%s-RH%d" % (v, n) for v in VARIANTS for n in (3, 4, 6)] \
     + ["disk2D-L4"] + SWEEP
 TIMES = ["0.1", "0.15", "0.25"]

@@ -38,7 +38,10 @@ STYLES = {"explicit": ("-", "o", "explicit, addedMassCoeff 2"),
           "semiImplicitExtrapBackwardF": ((0, (3, 1, 1, 1, 1, 1)), "X",
                                           "semiImplicit, extrapolated flux,"
                                           " backward, body at the fluid's"
-                                          " rate")}
+                                          " rate"),
+          "semiImplicitExtrapBackwardN": ((0, (6, 2)), "d",
+                                          "semiImplicit, extrapolated flux,"
+                                          " backward, pressureSolve newton")}
 
 
 def read(name):

@@ -289,6 +289,29 @@ void Foam::fbm::bodySystem::constrainPressureStep
 }
 
 
+void Foam::fbm::bodySystem::solvePressure
+(
+    fvScalarMatrix& pEqn,
+    volScalarField& p,
+    const volScalarField& rAtU,
+    volVectorField& HbyA,
+    surfaceScalarField& phiHbyA,
+    const dictionary& solverDict,
+    const label refCell
+)
+{
+    if (bodies_.empty())
+    {
+        pEqn.solve(solverDict);
+        return;
+    }
+    coupling_->solvePressure
+    (
+        pEqn, p, rAtU, HbyA, phiHbyA, solverDict, refCell
+    );
+}
+
+
 void Foam::fbm::bodySystem::setPrescribedMotions(const bool step)
 {
     // Exact positions and velocities at the current time, whatever the

@@ -21,13 +21,15 @@ COUPLINGS = {'P': 'coupling rigidProjection', 'S': 'coupling semiImplicit',
              'B': 'explicit, addedMassCoeff C_a = 1, backward time scheme '
                   '(the tutorial since 2026-12-05; the others Euler)',
              'SB': 'coupling semiImplicit, backward time scheme',
-             'SBs': 'coupling semiImplicit, backward, impulse solved'}
+             'SBs': 'coupling semiImplicit, backward, impulse solved',
+             'SBN': 'coupling semiImplicit, backward, pressureSolve newton'}
 
 
 def key(c):
     """Coupling label: C_a as a number, then 'P' (rigidProjection), 'S'
     (semiImplicit), 'B' (C_a 1 with backward), 'SB' (semiImplicit
-    with backward) and 'SBs' (the same with impulse solved)."""
+    with backward), 'SBs' (the same with impulse solved) and 'SBN' (with
+    pressureSolve newton)."""
     return (1, c) if c in COUPLINGS else (0, float(c))
 
 

@@ -12,6 +12,7 @@ License
 
 #include "couplingModel.H"
 #include "bodySystem.H"
+#include "fvMatrices.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -135,6 +136,21 @@ bool Foam::fbm::couplingModel::stateHasEntry
             << exit(FatalIOError);
     }
     return nFound > 0;
+}
+
+
+void Foam::fbm::couplingModel::solvePressure
+(
+    fvScalarMatrix& pEqn,
+    volScalarField& p,
+    const volScalarField& rAtU,
+    volVectorField& HbyA,
+    surfaceScalarField& phiHbyA,
+    const dictionary& solverDict,
+    const label refCell
+)
+{
+    pEqn.solve(solverDict);
 }
 
 

@@ -50,6 +50,16 @@ Foam::fbm::couplingModels::semiImplicit::bodySchemeNames
     { bodyScheme::Euler, "Euler" },
 });
 
+const Foam::Enum
+<
+    Foam::fbm::couplingModels::semiImplicit::pressureSolveForm
+>
+Foam::fbm::couplingModels::semiImplicit::pressureSolveFormNames
+({
+    { pressureSolveForm::iterated, "iterated" },
+    { pressureSolveForm::newton, "newton" },
+});
+
 
 // Largest share of the body's inertia that the lagged direct force may
 // take (below 1: the stability bound of a lagged mass; 0.9 leaves the
@@ -179,6 +189,99 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
 }
 
 
+void Foam::fbm::couplingModels::semiImplicit::setModes()
+{
+    const PtrList<body>& bodies = system_.bodies();
+    const scalarField& id = system_.fb().bodyID();
+    boolList rotates(bodies.size()), isotropic(bodies.size());
+    List<point> centres(bodies.size());
+    forAll(bodies, bi)
+    {
+        rotates[bi] = bodies[bi].rotates();
+        isotropic[bi] = bodies[bi].shape().isotropic();
+        centres[bi] = bodies[bi].centre();
+    }
+    labelList cellBody(cells_.size());
+    forAll(cells_, i)
+    {
+        cellBody[i] = label(id[cells_[i]]);
+    }
+    addedMass_->setModes
+    (
+        heavy_, rotates, isotropic, centres, planeMask_, axisMask_,
+        cells_, cellBody, weight_
+    );
+}
+
+
+Foam::scalarSquareMatrix
+Foam::fbm::couplingModels::semiImplicit::mobility() const
+{
+    const pressureAddedMass& cs = addedMass_();
+    const label n = cs.size();
+    const PtrList<body>& bodies = system_.bodies();
+    const scalar dt = system_.mesh().time().deltaTValue();
+    scalarSquareMatrix G(n, Zero);
+    for (label k = 0; k < n; ++k)
+    {
+        const label bi = cs.body(k);
+        const vector& ek = cs.direction(k);
+        const vector dU
+        (
+            cs.rotation(k)
+          ? angularImpulse(bi, dt*ek)
+          : rigidImpulse(bi, ek, Zero, bodies[bi].centre())
+        );
+        for (label i = 0; i < n; ++i)
+        {
+            if (cs.body(i) == bi && cs.rotation(i) == cs.rotation(k))
+            {
+                G(i, k) = cs.direction(i) & dU;
+            }
+        }
+    }
+    return G;
+}
+
+
+Foam::scalarList Foam::fbm::couplingModels::semiImplicit::modeForces
+(
+    const List<vector>& P,
+    const List<vector>& Q
+) const
+{
+    const pressureAddedMass& cs = addedMass_();
+    scalarList g(cs.size());
+    forAll(g, j)
+    {
+        const label bi = cs.body(j);
+        g[j] = cs.direction(j) & (cs.rotation(j) ? Q[bi] : P[bi]);
+    }
+    return g;
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::forcesOfVelocities
+(
+    const scalarList& a,
+    List<vector>& P,
+    List<vector>& Q
+) const
+{
+    const pressureAddedMass& cs = addedMass_();
+    scalarSquareMatrix G(mobility());
+    scalarList g(a);
+    Foam::solve(G, g);
+    forAll(g, j)
+    {
+        const label bi = cs.body(j);
+        const vector& e = cs.direction(j);
+        vector& f = cs.rotation(j) ? Q[bi] : P[bi];
+        f += (g[j] - (e & f))*e;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::couplingModels::semiImplicit::semiImplicit
@@ -190,9 +293,13 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     couplingModel(dict, system),
     impulse_(impulseForm::final),
     bodyScheme_(bodyScheme::fluid),
+    pressureSolve_(pressureSolveForm::iterated),
+    addedMassInterval_(10),
     heavy_(system.bodies().size(), false),
     timeIndex_(-1),
     corrector_(0),
+    fluxForce_(system.bodies().size(), Zero),
+    fluxTorque_(system.bodies().size(), Zero),
     pressureForce_(system.bodies().size(), Zero),
     pressureTorque_(system.bodies().size(), Zero),
     directForce_(system.bodies().size(), Zero),
@@ -218,7 +325,7 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     // The pressure force the bodies take at the end of a step, and the
     // time scheme of their velocity
     const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-    bool impulseGiven = false, schemeGiven = false;
+    bool impulseGiven = false, schemeGiven = false, solveGiven = false;
     impulse_ = readForm
     (
         coeffs, "impulse", impulseFormNames, impulseForm::final,
@@ -233,10 +340,22 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
         " (BDF2 with backward); Euler: Euler's whatever the fluid's",
         schemeGiven
     );
+    pressureSolve_ = readForm
+    (
+        coeffs, "pressureSolve", pressureSolveFormNames,
+        pressureSolveForm::iterated,
+        "iterated: the bodies' cells respond to the pressure as matter of"
+        " their density, over the pressure correctors; newton: the cells"
+        " are rigid and their velocity is found by Newton steps with the"
+        " added mass of the pressure equation",
+        solveGiven
+    );
     Info<< "fbm: coupling " << type() << ": impulse "
         << impulseFormNames[impulse_] << (impulseGiven ? "" : " (default)")
         << ", bodyScheme " << bodySchemeNames[bodyScheme_]
-        << (schemeGiven ? "" : " (default)") << nl;
+        << (schemeGiven ? "" : " (default)")
+        << ", pressureSolve " << pressureSolveFormNames[pressureSolve_]
+        << (solveGiven ? "" : " (default)") << nl;
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -257,6 +376,43 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
             << " PISO's the body's force oscillates from step to step at"
             << " viscous numbers nu dt/h^2 near 1"
             << exit(FatalIOError);
+    }
+
+    if
+    (
+        pressureSolve_ == pressureSolveForm::iterated
+     && coeffs.found("addedMassInterval", keyType::LITERAL)
+    )
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "addedMassInterval in " << coeffs.name() << " is"
+            << " pressureSolve newton's; pressureSolve is "
+            << pressureSolveFormNames[pressureSolve_]
+            << exit(FatalIOError);
+    }
+    if (pressureSolve_ == pressureSolveForm::newton)
+    {
+        // One Newton step per pressure solve
+        if (pimpleDict.getOrDefault<label>("nNonOrthogonalCorrectors", 0))
+        {
+            FatalIOErrorInFunction(pimpleDict)
+                << "pressureSolve newton in " << coeffs.name()
+                << " does not support nNonOrthogonalCorrectors > 0 in "
+                << pimpleDict.name() << exit(FatalIOError);
+        }
+        addedMass_.reset(new pressureAddedMass(mesh));
+        addedMassInterval_ =
+            coeffs.getOrDefault<label>("addedMassInterval", 10);
+        if (addedMassInterval_ < 1)
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "addedMassInterval " << addedMassInterval_ << " in "
+                << coeffs.name() << " is below 1" << exit(FatalIOError);
+        }
+        Info<< "fbm: coupling " << type() << ": addedMassInterval "
+            << addedMassInterval_
+            << (coeffs.found("addedMassInterval", keyType::LITERAL)
+                ? "" : " (default)") << nl;
     }
 
     if (mesh.nSolutionD() == 2)

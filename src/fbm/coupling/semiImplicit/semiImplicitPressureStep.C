@@ -13,6 +13,8 @@ License
 #include "semiImplicit.H"
 #include "bodySystem.H"
 #include "sumOverProcessors.H"
+#include "correctCoupled.H"
+#include "fvMatrices.H"
 #include "fvcGrad.H"
 #include "fvcFlux.H"
 #include "fvcSnGrad.H"
@@ -27,45 +29,6 @@ License
 
 namespace
 {
-
-// The coupled patches (processor, cyclic) of a field take the new cell
-// values; the other patches keep theirs (HbyA's wall values are the
-// constrained ones of constrainHbyA)
-template<class Type>
-void correctCoupled
-(
-    Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>& fld
-)
-{
-    using namespace Foam;
-    typename GeometricField<Type, fvPatchField, volMesh>::Boundary& bf =
-        fld.boundaryFieldRef();
-
-    const Pstream::commsTypes commsType =
-        (Pstream::defaultCommsType == Pstream::commsTypes::nonBlocking)
-      ? Pstream::commsTypes::nonBlocking
-      : Pstream::commsTypes::blocking;
-
-    const label nReq = Pstream::nRequests();
-    forAll(bf, patchi)
-    {
-        if (bf[patchi].coupled())
-        {
-            bf[patchi].initEvaluate(commsType);
-        }
-    }
-    if (commsType == Pstream::commsTypes::nonBlocking && Pstream::parRun())
-    {
-        Pstream::waitRequests(nReq);
-    }
-    forAll(bf, patchi)
-    {
-        if (bf[patchi].coupled())
-        {
-            bf[patchi].evaluate(commsType);
-        }
-    }
-}
 
 // A zero field of the mesh, not registered and not written: the scratch
 // fields of the pressure step
@@ -269,13 +232,41 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     scalarField& wTaui = wTau.primitiveFieldRef();
     vectorField& dRigidi = dRigid.primitiveFieldRef();
     vectorField& HbyAi = HbyA.primitiveFieldRef();
+    // With pressureSolve newton the cells are rigid in the pressure
+    // equation (no compliance): they take the present estimate of the
+    // rigid velocity of the step's pressure force, sum_j a_j Phi_j, in
+    // place of that of the last step (solvePressure() improves the
+    // estimate after each corrector; the first is the last step's force)
+    const bool newton = (pressureSolve_ == pressureSolveForm::newton);
+    if (newton)
+    {
+        setModes();
+        if (newStep)
+        {
+            modeVelocity_ =
+                mobility()*modeForces(pressureForce_, pressureTorque_);
+        }
+    }
     forAll(cells_, i)
     {
         const label celli = cells_[i];
         const label bi = label(id[celli]);
         const scalar w = weight_[i];
-        const scalar tau = responseTime(bi);
         lastGradP_[i] = gradP[celli];
+        if (newton)
+        {
+            dRigidi[celli] = w*
+            (
+                addedMass_->velocity(modeVelocity_, i)
+              - rigidImpulse
+                (
+                    bi, pressureForce_[bi], pressureTorque_[bi], C[celli]
+                )
+            );
+            HbyAi[celli] += dRigidi[celli];
+            continue;
+        }
+        const scalar tau = responseTime(bi);
         rAtUi[celli] += w*tau;
         wTaui[celli] = w*tau;
         dRigidi[celli] = w*
@@ -284,6 +275,11 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
           - rigidImpulse(bi, pressureForce_[bi], pressureTorque_[bi], C[celli])
         );
         HbyAi[celli] += wTaui[celli]*gradP[celli] + dRigidi[celli];
+    }
+    if (!newton)
+    {
+        fluxForce_ = lastForce_;
+        fluxTorque_ = lastTorque_;
     }
 
     // Processor and cyclic neighbours take the new values
@@ -294,6 +290,45 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     phiHbyA +=
         fvc::flux(dRigid)
       + fvc::interpolate(wTau)*fvc::snGrad(p)*mesh.magSf();
+}
+
+
+void Foam::fbm::couplingModels::semiImplicit::solvePressure
+(
+    fvScalarMatrix& pEqn,
+    volScalarField& p,
+    const volScalarField& rAtU,
+    volVectorField& HbyA,
+    surfaceScalarField& phiHbyA,
+    const dictionary& solverDict,
+    const label refCell
+)
+{
+    // The pressure with the bodies' cells at the present estimate
+    pEqn.solve(solverDict);
+    if (!addedMass_.valid())
+    {
+        return;
+    }
+
+    // One Newton step of the estimate, with the added mass of the
+    // pressure operator (solved again every addedMassInterval steps)
+    addedMass_->update
+    (
+        p, rAtU, solverDict, refCell, system_.rhoFluid(),
+        addedMassInterval_
+    );
+    fluxModeVelocity_ = modeVelocity_;
+    addedMass_->newtonStep
+    (
+        addedMass_->modeForces(p, system_.rhoFluid()), mobility(),
+        modeVelocity_
+    );
+
+    // The force whose rigid velocity the flux took
+    fluxForce_ = Zero;
+    fluxTorque_ = Zero;
+    forcesOfVelocities(fluxModeVelocity_, fluxForce_, fluxTorque_);
 }
 
 
@@ -332,8 +367,13 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     }
     if (impulse_ == impulseForm::solved)
     {
-        P = lastForce_;
-        Q = lastTorque_;
+        P = fluxForce_;
+        Q = fluxTorque_;
+    }
+    else if (pressureSolve_ == pressureSolveForm::newton)
+    {
+        // The Newton estimate of the step's pressure force
+        forcesOfVelocities(modeVelocity_, P, Q);
     }
 
     // The bodies' new velocities: the pressure force of the last step
@@ -380,11 +420,15 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         const label bi = label(id[celli]);
         pushedMass[bi] += rhoFluid*weight_[i]*V[celli];
         const vector Rnew(rigidImpulse(bi, P[bi], Q[bi], C[celli]));
+        const scalar tau =
+            pressureSolve_ == pressureSolveForm::iterated
+          ? responseTime(bi)
+          : scalar(0);
         u[celli] += weight_[i]*
         (
-            responseTime(bi)*(gradP[celli] - lastGradP_[i])
+            tau*(gradP[celli] - lastGradP_[i])
           + Rnew
-          - rigidImpulse(bi, lastForce_[bi], lastTorque_[bi], C[celli])
+          - rigidImpulse(bi, fluxForce_[bi], fluxTorque_[bi], C[celli])
         );
         const vector f
         (
