@@ -124,6 +124,10 @@ def fbmHistory(case):
         os.path.join(case, "constant/fbmProperties")).read())
     if ratio:
         coupling += "; maxViscousRatio " + ratio.group(1)
+    solve = re.search(r"pressureSolve\s+(\w+)\s*;", open(
+        os.path.join(case, "constant/fbmProperties")).read())
+    if solve:
+        coupling += "; pressureSolve " + solve.group(1)
     return t, x, y, uy, theta, cpu, coupling, t[-1]
 
 

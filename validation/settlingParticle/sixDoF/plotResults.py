@@ -27,6 +27,9 @@ section 2). Reads every run in runs/ (made by ./Allrun):
     runs/fbmSemiImplicitBackwardSolved-L<N>
                                 the same with semiImplicitCoeffs/impulse
                                 solved (./Allrun -solved)
+    runs/fbmSemiImplicitBackwardNewton-L<N>
+                                the same with semiImplicitCoeffs/
+                                pressureSolve newton (./Allrun -newton)
     runs/fbmOuter3-L<N>         the same with three outer correctors, no
                                 extrapolatePredictor, no minIter (the
                                 settings of the fbmFoam* runs above)
@@ -278,7 +281,8 @@ order = {"bodyFitted": 0, "bodyFittedSingle": 1, "bodyFittedRerun": 1.5,
          "fbmSemiImplicitBackwardCoOnly": 19,
          "fbmSemiImplicitBackwardGraded": 20,
          "fbmSemiImplicitBackwardGradedCoOnly": 21,
-         "fbmSemiImplicitBackwardSolved": 21.5}
+         "fbmSemiImplicitBackwardSolved": 21.5,
+         "fbmSemiImplicitBackwardNewton": 21.7}
 # Allrun -viscousRatio: the tutorial with maxViscousRatio set (VR<ratio>,
 # '.' as 'p'), after the others in ascending ratio
 for _run in glob.glob("runs/fbmSemiImplicitBackwardVR*-L*") + \
@@ -516,6 +520,8 @@ label = {
     "fbmSemiImplicitBackwardGradedCoOnly": "fbmFoam, semiImplicit, backward, "
                                            "graded mesh, step by maxCo alone",
     "fbmSemiImplicitBackwardSolved": "fbmFoam, tutorial with impulse solved",
+    "fbmSemiImplicitBackwardNewton": "fbmFoam, tutorial with pressureSolve "
+                                     "newton",
     "bodyFittedCoOnly": "body-fitted, step by maxCo alone",
     "fbmExplicitCoOnly": "fbmFoam, explicit Euler, step by maxCo alone",
     "fbmSemiImplicitCoOnly": "fbmFoam, semiImplicit, step by maxCo alone",
@@ -548,7 +554,8 @@ methodColour = {"fbmOuter3": "tab:orange", "fbmExplicit": "tab:green",
                 "fbmSemiImplicitBackwardCoOnly": "salmon",
                 "fbmSemiImplicitBackwardGraded": "darkred",
                 "fbmSemiImplicitBackwardGradedCoOnly": "indianred",
-                "fbmSemiImplicitBackwardSolved": "tab:blue"}
+                "fbmSemiImplicitBackwardSolved": "tab:blue",
+                "fbmSemiImplicitBackwardNewton": "tab:green"}
 levelStyle = {3: "--", 4: "-", 5: "-."}
 for m, c in methodColour.items():
     for lvl, ls in levelStyle.items():
@@ -642,7 +649,9 @@ accuracy = [("bodyFitted", "body-fitted, re-referenced (L1: its rerun)",
              "backward, graded mesh, step by maxCo alone", "indianred",
              "v"),
             ("fbmSemiImplicitBackwardSolved", "fbmFoam, tutorial with "
-             "semiImplicitCoeffs/impulse solved", "tab:blue", "v")]
+             "semiImplicitCoeffs/impulse solved", "tab:blue", "v"),
+            ("fbmSemiImplicitBackwardNewton", "fbmFoam, tutorial with "
+             "semiImplicitCoeffs/pressureSolve newton", "tab:green", "P")]
 floor = 0.02
 if bfRows:
     for method, lab, colour, marker in accuracy:

@@ -12,6 +12,7 @@ License
 
 #include "semiImplicit.H"
 #include "bodySystem.H"
+#include "sumOverProcessors.H"
 #include "fvMatrices.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -189,6 +190,58 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
 }
 
 
+void Foam::fbm::couplingModels::semiImplicit::selectRigid()
+{
+    const fvMesh& mesh = system_.mesh();
+    if (wallCell_.size() != mesh.nCells())
+    {
+        wallCell_.setSize(mesh.nCells());
+        wallCell_ = false;
+        for (const fvPatch& patch : mesh.boundary())
+        {
+            if (patch.type() == "wall")
+            {
+                for (const label celli : patch.faceCells())
+                {
+                    wallCell_[celli] = true;
+                }
+            }
+        }
+    }
+
+    // A body whose footprint reaches a cell of a wall: with no fluid cell
+    // left in the gap the rigid constraint and the lagged part of the
+    // force disagree by the whole lubrication pressure (the settling disk
+    // ran away at the wall, at a gap of 0.02-0.3 cells), so it takes the
+    // iterated pressure step there
+    const PtrList<body>& bodies = system_.bodies();
+    const scalarField& id = system_.fb().bodyID();
+    scalarList touching(bodies.size(), Zero);
+    for (const label celli : cells_)
+    {
+        if (wallCell_[celli])
+        {
+            touching[label(id[celli])] = 1;
+        }
+    }
+    sumOverProcessors(touching);
+    const boolList last(rigid_);
+    rigid_.setSize(bodies.size());
+    forAll(bodies, bi)
+    {
+        rigid_[bi] = heavy_[bi] && touching[bi] == 0;
+        if (heavy_[bi] && last.size() == rigid_.size() && last[bi] != rigid_[bi])
+        {
+            Info<< "fbm: coupling " << type() << ": body "
+                << bodies[bi].name()
+                << (rigid_[bi] ? " is clear of the walls again: newton"
+                               : " reaches a cell of a wall: iterated")
+                << " pressure step" << nl;
+        }
+    }
+}
+
+
 void Foam::fbm::couplingModels::semiImplicit::setModes()
 {
     const PtrList<body>& bodies = system_.bodies();
@@ -208,7 +261,7 @@ void Foam::fbm::couplingModels::semiImplicit::setModes()
     }
     addedMass_->setModes
     (
-        heavy_, rotates, isotropic, centres, planeMask_, axisMask_,
+        rigid_, rotates, isotropic, centres, planeMask_, axisMask_,
         cells_, cellBody, weight_
     );
 }

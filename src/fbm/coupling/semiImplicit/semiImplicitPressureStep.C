@@ -240,11 +240,17 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     const bool newton = (pressureSolve_ == pressureSolveForm::newton);
     if (newton)
     {
+        if (newStep)
+        {
+            selectRigid();
+        }
         setModes();
         if (newStep)
         {
             modeVelocity_ =
-                mobility()*modeForces(pressureForce_, pressureTorque_);
+                addedMass_->size()
+              ? mobility()*modeForces(pressureForce_, pressureTorque_)
+              : scalarList();
         }
     }
     forAll(cells_, i)
@@ -253,7 +259,7 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
         const label bi = label(id[celli]);
         const scalar w = weight_[i];
         lastGradP_[i] = gradP[celli];
-        if (newton)
+        if (newton && rigid_[bi])
         {
             dRigidi[celli] = w*
             (
@@ -276,11 +282,8 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
         );
         HbyAi[celli] += wTaui[celli]*gradP[celli] + dRigidi[celli];
     }
-    if (!newton)
-    {
-        fluxForce_ = lastForce_;
-        fluxTorque_ = lastTorque_;
-    }
+    fluxForce_ = lastForce_;
+    fluxTorque_ = lastTorque_;
 
     // Processor and cyclic neighbours take the new values
     correctCoupled(rAtU);
@@ -306,7 +309,7 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
 {
     // The pressure with the bodies' cells at the present estimate
     pEqn.solve(solverDict);
-    if (!addedMass_.valid())
+    if (!addedMass_.valid() || !addedMass_->size())
     {
         return;
     }
@@ -325,9 +328,8 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
         modeVelocity_
     );
 
-    // The force whose rigid velocity the flux took
-    fluxForce_ = Zero;
-    fluxTorque_ = Zero;
+    // The force whose rigid velocity the flux took (the bodies of the
+    // iterated step keep lastForce_)
     forcesOfVelocities(fluxModeVelocity_, fluxForce_, fluxTorque_);
 }
 
@@ -370,7 +372,7 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         P = fluxForce_;
         Q = fluxTorque_;
     }
-    else if (pressureSolve_ == pressureSolveForm::newton)
+    else if (addedMass_.valid() && addedMass_->size())
     {
         // The Newton estimate of the step's pressure force
         forcesOfVelocities(modeVelocity_, P, Q);
@@ -421,9 +423,9 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         pushedMass[bi] += rhoFluid*weight_[i]*V[celli];
         const vector Rnew(rigidImpulse(bi, P[bi], Q[bi], C[celli]));
         const scalar tau =
-            pressureSolve_ == pressureSolveForm::iterated
-          ? responseTime(bi)
-          : scalar(0);
+            pressureSolve_ == pressureSolveForm::newton && rigid_[bi]
+          ? scalar(0)
+          : responseTime(bi);
         u[celli] += weight_[i]*
         (
             tau*(gradP[celli] - lastGradP_[i])
