@@ -15,7 +15,8 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
 rows = list(csv.DictReader(open('viscousMap.csv')))
-names = {'S': 'semiImplicit, Euler', 'SB': 'semiImplicit, backward'}
+names = {'S': 'semiImplicit, Euler', 'SB': 'semiImplicit, backward',
+         'SBN': 'semiImplicit, backward, pressureSolve newton'}
 keys = []
 for r in rows:
     k = (r['level'], r['Ca'])
@@ -24,7 +25,7 @@ for r in rows:
 rs = sorted({float(r['r']) for r in rows})
 
 # The inertial part of the diagonal, (1 + w) V/dt, over V/dt
-inertia = {'S': 1.0, 'SB': 1.5}
+inertia = {'S': 1.0, 'SB': 1.5, 'SBN': 1.5}
 short = {'stable': 'S', 'oscillating': 'O', 'diverged': 'D'}
 with open('viscousTable.md', 'w') as f:
     f.write('Status at nominal viscous ratio r = 4 nu dt/h^2 (S stable, '
@@ -54,7 +55,7 @@ with open('viscousTable.md', 'w') as f:
                    ' | '.join(cells), first, scaled))
 
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
-styles = {'S': '-', 'SB': '--'}
+styles = {'S': '-', 'SB': '--', 'SBN': ':'}
 colours = {'3': 'C0', '4': 'C1'}
 for panel, ax in enumerate(axes):
     for lv, ca in keys:
