@@ -327,6 +327,21 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
         addedMass_->modeForces(p, system_.rhoFluid()), mobility(),
         modeVelocity_
     );
+    if (debug)
+    {
+        // How far this corrector's Newton step moved the estimate: the
+        // convergence of newton's fixed point over the correctors
+        scalar change = 0, size = 0;
+        forAll(modeVelocity_, j)
+        {
+            change += sqr(modeVelocity_[j] - fluxModeVelocity_[j]);
+            size += sqr(modeVelocity_[j]);
+        }
+        Info<< "fbm: semiImplicit: newton step " << corrector_
+            << " changed the bodies' rigid velocity estimate by "
+            << (size > 0 ? Foam::sqrt(change/size) : scalar(0))
+            << " (relative)" << endl;
+    }
 
     // The force whose rigid velocity the flux took (the bodies of the
     // iterated step keep lastForce_)
