@@ -20,6 +20,7 @@ License
 #include "zeroGradientFvPatchFields.H"
 #include "sumOverProcessors.H"
 #include "correctCoupled.H"
+#include "scratchField.H"
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -84,34 +85,16 @@ void Foam::fbm::pressureAddedMass::solveModes
         }
         volScalarField y
         (
-            IOobject
+            scratchField<scalar>
             (
-                "fbmModePressure" + Foam::name(j),
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedScalar(p.dimensions(), Zero),
-            types
+                "fbmModePressure" + Foam::name(j), mesh_, p.dimensions(), types
+            )
         );
 
         // The divergence of the mode's rigid velocity on its body's cells
         volVectorField wPhi
         (
-            IOobject
-            (
-                "fbmModeVelocity",
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedVector(dimVelocity, Zero)
+            scratchField<vector>("fbmModeVelocity", mesh_, dimVelocity)
         );
         vectorField& wPhii = wPhi.primitiveFieldRef();
         forAll(cells_, i)

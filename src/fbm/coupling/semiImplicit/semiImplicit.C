@@ -316,13 +316,14 @@ Foam::scalarList Foam::fbm::couplingModels::semiImplicit::modeForces
 
 void Foam::fbm::couplingModels::semiImplicit::forcesOfVelocities
 (
+    const scalarSquareMatrix& mobility,
     const scalarList& a,
     List<vector>& P,
     List<vector>& Q
 ) const
 {
     const pressureAddedMass& cs = addedMass_();
-    scalarSquareMatrix G(mobility());
+    scalarSquareMatrix G(mobility);
     scalarList g(a);
     Foam::solve(G, g);
     forAll(g, j)

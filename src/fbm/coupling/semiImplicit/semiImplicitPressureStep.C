@@ -14,6 +14,7 @@ License
 #include "bodySystem.H"
 #include "sumOverProcessors.H"
 #include "correctCoupled.H"
+#include "scratchField.H"
 #include "fvMatrices.H"
 #include "fvcGrad.H"
 #include "fvcFlux.H"
@@ -23,42 +24,6 @@ License
 // The pressure step of coupling semiImplicit: the heavy bodies' cells
 // respond to the pressure in each corrector (constrainPressureStep) and
 // the bodies take the pressure impulse of the step (beforeForces)
-
-
-// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-// A zero field of the mesh, not registered and not written: the scratch
-// fields of the pressure step
-template<class Type>
-Foam::tmp<Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>>
-scratchField
-(
-    const Foam::word& name,
-    const Foam::fvMesh& mesh,
-    const Foam::dimensionSet& dims
-)
-{
-    using namespace Foam;
-    return tmp<GeometricField<Type, fvPatchField, volMesh>>::New
-    (
-        IOobject
-        (
-            name,
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensioned<Type>(dims, Zero)
-    );
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -322,10 +287,10 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
         addedMassInterval_
     );
     fluxModeVelocity_ = modeVelocity_;
+    const scalarSquareMatrix G(mobility());
     addedMass_->newtonStep
     (
-        addedMass_->modeForces(p, system_.rhoFluid()), mobility(),
-        modeVelocity_
+        addedMass_->modeForces(p, system_.rhoFluid()), G, modeVelocity_
     );
     if (debug)
     {
@@ -345,7 +310,7 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
 
     // The force whose rigid velocity the flux took (the bodies of the
     // iterated step keep lastForce_)
-    forcesOfVelocities(fluxModeVelocity_, fluxForce_, fluxTorque_);
+    forcesOfVelocities(G, fluxModeVelocity_, fluxForce_, fluxTorque_);
 }
 
 
@@ -390,7 +355,7 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
     else if (addedMass_.valid() && addedMass_->size())
     {
         // The Newton estimate of the step's pressure force
-        forcesOfVelocities(modeVelocity_, P, Q);
+        forcesOfVelocities(mobility(), modeVelocity_, P, Q);
     }
 
     // The bodies' new velocities: the pressure force of the last step
