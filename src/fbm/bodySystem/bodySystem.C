@@ -294,8 +294,6 @@ void Foam::fbm::bodySystem::solvePressure
     fvScalarMatrix& pEqn,
     volScalarField& p,
     const volScalarField& rAtU,
-    volVectorField& HbyA,
-    surfaceScalarField& phiHbyA,
     const dictionary& solverDict,
     const label refCell
 )
@@ -307,7 +305,7 @@ void Foam::fbm::bodySystem::solvePressure
     }
     coupling_->solvePressure
     (
-        pEqn, p, rAtU, HbyA, phiHbyA, solverDict, refCell
+        pEqn, p, rAtU, solverDict, refCell
     );
 }
 

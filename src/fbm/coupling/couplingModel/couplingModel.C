@@ -144,8 +144,6 @@ void Foam::fbm::couplingModel::solvePressure
     fvScalarMatrix& pEqn,
     volScalarField& p,
     const volScalarField& rAtU,
-    volVectorField& HbyA,
-    surfaceScalarField& phiHbyA,
     const dictionary& solverDict,
     const label refCell
 )

@@ -266,8 +266,6 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
     fvScalarMatrix& pEqn,
     volScalarField& p,
     const volScalarField& rAtU,
-    volVectorField& HbyA,
-    surfaceScalarField& phiHbyA,
     const dictionary& solverDict,
     const label refCell
 )
