@@ -51,16 +51,6 @@ Foam::fbm::couplingModels::semiImplicit::bodySchemeNames
     { bodyScheme::Euler, "Euler" },
 });
 
-const Foam::Enum
-<
-    Foam::fbm::couplingModels::semiImplicit::pressureSolveForm
->
-Foam::fbm::couplingModels::semiImplicit::pressureSolveFormNames
-({
-    { pressureSolveForm::iterated, "iterated" },
-    { pressureSolveForm::newton, "newton" },
-});
-
 
 // Largest share of the body's inertia that the lagged direct force may
 // take (below 1: the stability bound of a lagged mass; 0.9 leaves the
@@ -190,152 +180,6 @@ Foam::vector Foam::fbm::couplingModels::semiImplicit::angularImpulse
 }
 
 
-void Foam::fbm::couplingModels::semiImplicit::selectRigid()
-{
-    const fvMesh& mesh = system_.mesh();
-    if (wallCell_.size() != mesh.nCells())
-    {
-        wallCell_.setSize(mesh.nCells());
-        wallCell_ = false;
-        for (const fvPatch& patch : mesh.boundary())
-        {
-            if (patch.type() == "wall")
-            {
-                for (const label celli : patch.faceCells())
-                {
-                    wallCell_[celli] = true;
-                }
-            }
-        }
-    }
-
-    // A body whose footprint reaches a cell of a wall: with no fluid cell
-    // left in the gap the rigid constraint and the lagged part of the
-    // force disagree by the whole lubrication pressure (the settling disk
-    // ran away at the wall, at a gap of 0.02-0.3 cells), so it takes the
-    // iterated pressure step there
-    const PtrList<body>& bodies = system_.bodies();
-    const scalarField& id = system_.fb().bodyID();
-    scalarList touching(bodies.size(), Zero);
-    for (const label celli : cells_)
-    {
-        if (wallCell_[celli])
-        {
-            touching[label(id[celli])] = 1;
-        }
-    }
-    sumOverProcessors(touching);
-    const boolList last(rigid_);
-    rigid_.setSize(bodies.size());
-    forAll(bodies, bi)
-    {
-        rigid_[bi] = heavy_[bi] && touching[bi] == 0;
-        if (heavy_[bi] && last.size() == rigid_.size() && last[bi] != rigid_[bi])
-        {
-            Info<< "fbm: coupling " << type() << ": body "
-                << bodies[bi].name()
-                << (rigid_[bi] ? " is clear of the walls again: newton"
-                               : " reaches a cell of a wall: iterated")
-                << " pressure step" << nl;
-        }
-    }
-}
-
-
-void Foam::fbm::couplingModels::semiImplicit::setModes()
-{
-    const PtrList<body>& bodies = system_.bodies();
-    const scalarField& id = system_.fb().bodyID();
-    boolList rotates(bodies.size()), isotropic(bodies.size());
-    List<point> centres(bodies.size());
-    forAll(bodies, bi)
-    {
-        rotates[bi] = bodies[bi].rotates();
-        isotropic[bi] = bodies[bi].shape().isotropic();
-        centres[bi] = bodies[bi].centre();
-    }
-    labelList cellBody(cells_.size());
-    forAll(cells_, i)
-    {
-        cellBody[i] = label(id[cells_[i]]);
-    }
-    addedMass_->setModes
-    (
-        rigid_, rotates, isotropic, centres, planeMask_, axisMask_,
-        cells_, cellBody, weight_
-    );
-}
-
-
-Foam::scalarSquareMatrix
-Foam::fbm::couplingModels::semiImplicit::mobility() const
-{
-    const pressureAddedMass& cs = addedMass_();
-    const label n = cs.size();
-    const PtrList<body>& bodies = system_.bodies();
-    const scalar dt = system_.mesh().time().deltaTValue();
-    scalarSquareMatrix G(n, Zero);
-    for (label k = 0; k < n; ++k)
-    {
-        const label bi = cs.body(k);
-        const vector& ek = cs.direction(k);
-        const vector dU
-        (
-            cs.rotation(k)
-          ? angularImpulse(bi, dt*ek)
-          : rigidImpulse(bi, ek, Zero, bodies[bi].centre())
-        );
-        for (label i = 0; i < n; ++i)
-        {
-            if (cs.body(i) == bi && cs.rotation(i) == cs.rotation(k))
-            {
-                G(i, k) = cs.direction(i) & dU;
-            }
-        }
-    }
-    return G;
-}
-
-
-Foam::scalarList Foam::fbm::couplingModels::semiImplicit::modeForces
-(
-    const List<vector>& P,
-    const List<vector>& Q
-) const
-{
-    const pressureAddedMass& cs = addedMass_();
-    scalarList g(cs.size());
-    forAll(g, j)
-    {
-        const label bi = cs.body(j);
-        g[j] = cs.direction(j) & (cs.rotation(j) ? Q[bi] : P[bi]);
-    }
-    return g;
-}
-
-
-void Foam::fbm::couplingModels::semiImplicit::forcesOfVelocities
-(
-    const scalarSquareMatrix& mobility,
-    const scalarList& a,
-    List<vector>& P,
-    List<vector>& Q
-) const
-{
-    const pressureAddedMass& cs = addedMass_();
-    scalarSquareMatrix G(mobility);
-    scalarList g(a);
-    Foam::solve(G, g);
-    forAll(g, j)
-    {
-        const label bi = cs.body(j);
-        const vector& e = cs.direction(j);
-        vector& f = cs.rotation(j) ? Q[bi] : P[bi];
-        f += (g[j] - (e & f))*e;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::couplingModels::semiImplicit::semiImplicit
@@ -347,8 +191,6 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     couplingModel(dict, system),
     impulse_(impulseForm::final),
     bodyScheme_(bodyScheme::fluid),
-    pressureSolve_(pressureSolveForm::iterated),
-    addedMassInterval_(10),
     heavy_(system.bodies().size(), false),
     timeIndex_(-1),
     corrector_(0),
@@ -379,7 +221,7 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     // The pressure force the bodies take at the end of a step, and the
     // time scheme of their velocity
     const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-    bool impulseGiven = false, schemeGiven = false, solveGiven = false;
+    bool impulseGiven = false, schemeGiven = false;
     impulse_ = readForm
     (
         coeffs, "impulse", impulseFormNames, impulseForm::final,
@@ -394,22 +236,10 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
         " (BDF2 with backward); Euler: Euler's whatever the fluid's",
         schemeGiven
     );
-    pressureSolve_ = readForm
-    (
-        coeffs, "pressureSolve", pressureSolveFormNames,
-        pressureSolveForm::iterated,
-        "iterated: the bodies' cells respond to the pressure as matter of"
-        " their density, over the pressure correctors; newton: the cells"
-        " are rigid and their velocity is found by Newton steps with the"
-        " added mass of the pressure equation",
-        solveGiven
-    );
     Info<< "fbm: coupling " << type() << ": impulse "
         << impulseFormNames[impulse_] << (impulseGiven ? "" : " (default)")
         << ", bodyScheme " << bodySchemeNames[bodyScheme_]
-        << (schemeGiven ? "" : " (default)")
-        << ", pressureSolve " << pressureSolveFormNames[pressureSolve_]
-        << (solveGiven ? "" : " (default)") << nl;
+        << (schemeGiven ? "" : " (default)") << nl;
 
     // The pressure equation needs PIMPLE's consistent (SIMPLEC) 1/A: with
     // PISO's a_P the fluid beside a body responds to the pressure as if it
@@ -432,42 +262,13 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
             << exit(FatalIOError);
     }
 
-    if
-    (
-        pressureSolve_ == pressureSolveForm::iterated
-     && coeffs.found("addedMassInterval", keyType::LITERAL)
-    )
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "addedMassInterval in " << coeffs.name() << " is"
-            << " pressureSolve newton's; pressureSolve is "
-            << pressureSolveFormNames[pressureSolve_]
-            << exit(FatalIOError);
-    }
-    if (pressureSolve_ == pressureSolveForm::newton)
-    {
-        // One Newton step per pressure solve
-        if (pimpleDict.getOrDefault<label>("nNonOrthogonalCorrectors", 0))
-        {
-            FatalIOErrorInFunction(pimpleDict)
-                << "pressureSolve newton in " << coeffs.name()
-                << " does not support nNonOrthogonalCorrectors > 0 in "
-                << pimpleDict.name() << exit(FatalIOError);
-        }
-        addedMass_.reset(new pressureAddedMass(mesh));
-        addedMassInterval_ =
-            coeffs.getOrDefault<label>("addedMassInterval", 10);
-        if (addedMassInterval_ < 1)
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "addedMassInterval " << addedMassInterval_ << " in "
-                << coeffs.name() << " is below 1" << exit(FatalIOError);
-        }
-        Info<< "fbm: coupling " << type() << ": addedMassInterval "
-            << addedMassInterval_
-            << (coeffs.found("addedMassInterval", keyType::LITERAL)
-                ? "" : " (default)") << nl;
-    }
+    // How the pressure step finds the bodies' response (run-time
+    // selected; its constructor checks its own entries)
+    pressureStep_ = pressureStep::New(coeffs, *this, system);
+    Info<< "fbm: coupling " << type() << ": pressureSolve "
+        << pressureStep_->type()
+        << (coeffs.found("pressureSolve", keyType::LITERAL)
+            ? "" : " (default)") << nl;
 
     if (mesh.nSolutionD() == 2)
     {

@@ -50,12 +50,9 @@ void Foam::fbm::couplingModels::semiImplicit::readState
             << " restart pressure on the moved bodies" << nl;
     }
 
-    // pressureSolve newton: the added mass of the pressure operator and
-    // the step it was solved in (the same for every body)
-    if (addedMass_.valid() && stateHasEntry(state, "addedMassMatrix"))
-    {
-        addedMass_->read(state.subDict(bodies[0].name()));
-    }
+    // The pressure step's state (pressureSolve newton: the added mass of
+    // the pressure operator and the step it was solved in)
+    pressureStep_->readState(state);
 
     // With backward: the push of the bodies' cells in the step that led
     // to the restart time, which the enclosed fluid's rate of the next
@@ -103,12 +100,9 @@ void Foam::fbm::couplingModels::semiImplicit::writeState
     }
     // The viscous limit of the next step (the same for every body)
     limit_.write(os);
-    // pressureSolve newton: the added mass of the pressure operator (the
-    // same for every body)
-    if (addedMass_.valid())
-    {
-        addedMass_->write(os);
-    }
+    // The pressure step's state (pressureSolve newton: the added mass of
+    // the pressure operator, the same for every body)
+    pressureStep_->writeState(os);
 }
 
 // ************************************************************************* //

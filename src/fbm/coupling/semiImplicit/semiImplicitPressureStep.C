@@ -197,38 +197,26 @@ void Foam::fbm::couplingModels::semiImplicit::constrainPressureStep
     scalarField& wTaui = wTau.primitiveFieldRef();
     vectorField& dRigidi = dRigid.primitiveFieldRef();
     vectorField& HbyAi = HbyA.primitiveFieldRef();
-    // With pressureSolve newton the cells are rigid in the pressure
-    // equation (no compliance): they take the present estimate of the
-    // rigid velocity of the step's pressure force, sum_j a_j Phi_j, in
-    // place of that of the last step (solvePressure() improves the
-    // estimate after each corrector; the first is the last step's force)
-    const bool newton = (pressureSolve_ == pressureSolveForm::newton);
-    if (newton)
-    {
-        if (newStep)
-        {
-            selectRigid();
-        }
-        setModes();
-        if (newStep)
-        {
-            modeVelocity_ =
-                addedMass_->size()
-              ? mobility()*modeForces(pressureForce_, pressureTorque_)
-              : scalarList();
-        }
-    }
+    // The pressure step may make a body's cells rigid in the pressure
+    // equation (no compliance; pressureSolve newton): they take its
+    // estimate of the rigid velocity of the step's pressure force in place
+    // of that of the last step (solvePressure() improves the estimate
+    // after each corrector; the first is the last step's force)
+    pressureStep_->correct
+    (
+        newStep, cells_, weight_, pressureForce_, pressureTorque_
+    );
     forAll(cells_, i)
     {
         const label celli = cells_[i];
         const label bi = label(id[celli]);
         const scalar w = weight_[i];
         lastGradP_[i] = gradP[celli];
-        if (newton && rigid_[bi])
+        if (pressureStep_->rigid(bi))
         {
             dRigidi[celli] = w*
             (
-                addedMass_->velocity(modeVelocity_, i)
+                pressureStep_->velocity(i)
               - rigidImpulse
                 (
                     bi, pressureForce_[bi], pressureTorque_[bi], C[celli]
@@ -270,45 +258,12 @@ void Foam::fbm::couplingModels::semiImplicit::solvePressure
     const label refCell
 )
 {
-    // The pressure with the bodies' cells at the present estimate
-    pEqn.solve(solverDict);
-    if (!addedMass_.valid() || !addedMass_->size())
-    {
-        return;
-    }
-
-    // One Newton step of the estimate, with the added mass of the
-    // pressure operator (solved again every addedMassInterval steps)
-    addedMass_->update
+    // The pressure step solves it (fluxForce_, the force whose rigid
+    // velocity the flux took, changes in its rigid bodies' motion)
+    pressureStep_->solve
     (
-        p, rAtU, solverDict, refCell, system_.rhoFluid(),
-        addedMassInterval_
+        pEqn, p, rAtU, solverDict, refCell, fluxForce_, fluxTorque_
     );
-    fluxModeVelocity_ = modeVelocity_;
-    const scalarSquareMatrix G(mobility());
-    addedMass_->newtonStep
-    (
-        addedMass_->modeForces(p, system_.rhoFluid()), G, modeVelocity_
-    );
-    if (debug)
-    {
-        // How far this corrector's Newton step moved the estimate: the
-        // convergence of newton's fixed point over the correctors
-        scalar change = 0, size = 0;
-        forAll(modeVelocity_, j)
-        {
-            change += sqr(modeVelocity_[j] - fluxModeVelocity_[j]);
-            size += sqr(modeVelocity_[j]);
-        }
-        Info<< "fbm: semiImplicit: newton step " << corrector_
-            << " changed the bodies' rigid velocity estimate by "
-            << (size > 0 ? Foam::sqrt(change/size) : scalar(0))
-            << " (relative)" << endl;
-    }
-
-    // The force whose rigid velocity the flux took (the bodies of the
-    // iterated step keep lastForce_)
-    forcesOfVelocities(G, fluxModeVelocity_, fluxForce_, fluxTorque_);
 }
 
 
@@ -350,10 +305,11 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         P = fluxForce_;
         Q = fluxTorque_;
     }
-    else if (addedMass_.valid() && addedMass_->size())
+    else
     {
-        // The Newton estimate of the step's pressure force
-        forcesOfVelocities(mobility(), modeVelocity_, P, Q);
+        // The pressure step's estimate of the step's pressure force (its
+        // rigid bodies; pressureSolve newton)
+        pressureStep_->stepForces(P, Q);
     }
 
     // The bodies' new velocities: the pressure force of the last step
@@ -401,9 +357,7 @@ void Foam::fbm::couplingModels::semiImplicit::beforeForces
         pushedMass[bi] += rhoFluid*weight_[i]*V[celli];
         const vector Rnew(rigidImpulse(bi, P[bi], Q[bi], C[celli]));
         const scalar tau =
-            pressureSolve_ == pressureSolveForm::newton && rigid_[bi]
-          ? scalar(0)
-          : responseTime(bi);
+            pressureStep_->rigid(bi) ? scalar(0) : responseTime(bi);
         u[celli] += weight_[i]*
         (
             tau*(gradP[celli] - lastGradP_[i])
