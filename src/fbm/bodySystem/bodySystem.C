@@ -289,6 +289,15 @@ void Foam::fbm::bodySystem::constrainPressureStep
 }
 
 
+void Foam::fbm::bodySystem::correctVelocity(volVectorField& U)
+{
+    if (!bodies_.empty())
+    {
+        coupling_->correctVelocity(U);
+    }
+}
+
+
 void Foam::fbm::bodySystem::solvePressure
 (
     fvScalarMatrix& pEqn,

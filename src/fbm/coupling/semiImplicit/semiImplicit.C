@@ -196,6 +196,8 @@ Foam::fbm::couplingModels::semiImplicit::semiImplicit
     corrector_(0),
     fluxForce_(system.bodies().size(), Zero),
     fluxTorque_(system.bodies().size(), Zero),
+    cellForce_(system.bodies().size(), Zero),
+    cellTorque_(system.bodies().size(), Zero),
     pressureForce_(system.bodies().size(), Zero),
     pressureTorque_(system.bodies().size(), Zero),
     directForce_(system.bodies().size(), Zero),
