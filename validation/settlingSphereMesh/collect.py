@@ -96,6 +96,7 @@ SWEEP = ["semiImplicitExtrapBackwardF-%s-RH%d" % (v, n)
          for v, n in (("n3", 3), ("n4", 3), ("n6", 3), ("r1.6", 3),
                       ("n4", 4), ("r1.6", 4))] \
     + ["semiImplicitExtrapBackwardN-n4-RH3",
+       "semiImplicitExtrapBackwardN-n8-RH3",
        "semiImplicitExtrapBackwardN-r1.6-RH3"]
 ORDER = ["%s-RH%d" % (v, n) for v in VARIANTS for n in (3, 4, 6)] \
     + ["disk2D-L4"] + SWEEP

@@ -16,7 +16,9 @@ import matplotlib.pyplot as plt
 
 rows = list(csv.DictReader(open('viscousMap.csv')))
 names = {'S': 'semiImplicit, Euler', 'SB': 'semiImplicit, backward',
-         'SBN': 'semiImplicit, backward, pressureSolve newton'}
+         'SBN': 'semiImplicit, backward, pressureSolve newton',
+         'SBL': 'semiImplicit, backward, rho_s 0.55',
+         'SBNL': 'semiImplicit, backward, pressureSolve newton, rho_s 0.55'}
 keys = []
 for r in rows:
     k = (r['level'], r['Ca'])
@@ -25,7 +27,7 @@ for r in rows:
 rs = sorted({float(r['r']) for r in rows})
 
 # The inertial part of the diagonal, (1 + w) V/dt, over V/dt
-inertia = {'S': 1.0, 'SB': 1.5, 'SBN': 1.5}
+inertia = {'S': 1.0, 'SB': 1.5, 'SBN': 1.5, 'SBL': 1.5, 'SBNL': 1.5}
 short = {'stable': 'S', 'oscillating': 'O', 'diverged': 'D'}
 with open('viscousTable.md', 'w') as f:
     f.write('Status at nominal viscous ratio r = 4 nu dt/h^2 (S stable, '
@@ -55,7 +57,7 @@ with open('viscousTable.md', 'w') as f:
                    ' | '.join(cells), first, scaled))
 
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
-styles = {'S': '-', 'SB': '--', 'SBN': ':'}
+styles = {'S': '-', 'SB': '--', 'SBN': ':', 'SBL': '-.', 'SBNL': (0, (1, 3))}
 colours = {'3': 'C0', '4': 'C1'}
 for panel, ax in enumerate(axes):
     for lv, ca in keys:
@@ -65,7 +67,8 @@ for panel, ax in enumerate(axes):
         x = [float(r['r'])/f for r in m if r['status'] != 'diverged']
         y = [max(100*float(r['osc']), 1e-3) for r in m
              if r['status'] != 'diverged']
-        ax.plot(x, y, styles.get(ca, ':'), marker='s' if ca == 'SB' else 'o',
+        ax.plot(x, y, linestyle=styles.get(ca, ':'),
+                marker={'SB': 's', 'SBL': 'v', 'SBNL': '^'}.get(ca, 'o'),
                 color=colours.get(lv, 'k'),
                 label='R/h %d, %s' % (3*2**(int(lv) - 3), names.get(ca, ca)))
         xd = [float(r['r'])/f for r in m if r['status'] == 'diverged']
@@ -81,7 +84,7 @@ for panel, ax in enumerate(axes):
                   if panel else 'nominal viscous ratio r = 4 nu dt / h$^2$')
 axes[0].set_ylabel('oscillation index of U_y, last 50 steps [%]')
 axes[0].legend(fontsize=8)
-fig.suptitle('Settling disk, rho_s 1.5, fixed step: the viscous step limit'
-             ' (x: diverged)')
+fig.suptitle('Settling disk, rho_s 1.5 (rising, 0.55: the light variants),'
+             ' fixed step: the viscous step limit (x: diverged)')
 fig.tight_layout()
 fig.savefig('viscousMap.png', dpi=110)
