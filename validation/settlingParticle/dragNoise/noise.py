@@ -6,7 +6,9 @@ Usage: noise.py RUNS_DIR OUT.csv
 For each run in RUNS_DIR and each of its body files (particle.dat: the force
 model momentumExchange; particle.volumeIntegral.dat: the compared
 volumeIntegral), over the records where the disk's speed is at least 98 % of
-its largest (terminal speed):
+its largest (terminal speed; for a disk moved at a prescribed constant
+speed the records after 6 d of travel while it is at least d from the
+bottom):
 - noise_pct: the drag noise of validation/settlingParticle/plotResults.py,
   the rms of Fy about its centred running mean over 21 records, in % of the
   mean drag;
@@ -18,7 +20,9 @@ its largest (terminal speed):
   one cell crossing (a running mean over steps_per_crossing records);
 - velocity_noise_pct: the noise of the disk's vertical velocity, in % of it;
 - Re_max: rho_s max|U| d/mu while the disk is at least d from the bottom,
-  as validation/settlingParticle/plotResults.py takes it;
+  as validation/settlingParticle/plotResults.py takes it (empty for a disk
+  moved at a prescribed speed);
+- coupling: the run's coupling, or prescribed;
 - cpu_s: the run's CPU time (ExecutionTime of log.fbmFoam).
 """
 
@@ -45,6 +49,18 @@ def setting(run, path, key):
     return m.group(1) if m else ""
 
 
+def coupling(run, prescribed):
+    """The coupling of a run: semiImplicit, semiImplicit-newton, explicit,
+    or prescribed (the disk moved at a prescribed speed)"""
+    if prescribed:
+        return "prescribed"
+    name = setting(run, "constant/fbmProperties", "coupling")
+    text = open(os.path.join(run, "constant", "fbmProperties")).read()
+    if re.search(r"^\s*pressureSolve\s+newton\s*;", text, re.M):
+        name += "-newton"
+    return name
+
+
 def deviation(f, half):
     """f less its centred running mean over 2 half + 1 records"""
     k = np.ones(2*half + 1)/(2*half + 1)
@@ -57,7 +73,12 @@ def analyse(path, h):
     t, Fy, Uy = d[:, 0], d[:, 2], d[:, 11]
     speed = np.hypot(d[:, 10], d[:, 11])
     uMax = speed.max()
-    idx = np.where(speed >= 0.98*uMax)[0]
+    if speed.min() > (1 - 1e-6)*uMax:
+        # A prescribed constant speed: after 6 d of travel, while at least
+        # d from the bottom
+        idx = np.where((t*uMax >= 12*RADIUS) & far)[0]
+    else:
+        idx = np.where(speed >= 0.98*uMax)[0]
     seg = slice(idx[0], idx[-1] + 1)
     f, tt = Fy[seg], t[seg]
     if len(f) < 4*HALF + 1:
@@ -73,6 +94,7 @@ def analyse(path, h):
     avg = np.convolve(f, np.ones(n)/n, mode="valid")
     vdev = deviation(Uy[seg], HALF)
     return {
+        "prescribed": speed.min() > (1 - 1e-6)*uMax,
         "far_speed_max": speed[far].max(),
         "U_max": uMax,
         "dt": dt,
@@ -108,15 +130,18 @@ def main(runsDir, out):
             nu = float(setting(run, "system/caseParameters", "nu"))
             cpu = re.findall(r"ExecutionTime = ([0-9.]+) s",
                              open(os.path.join(run, "log.fbmFoam")).read())
-            r.update(Re_max=rhoS*r["far_speed_max"]*2*RADIUS/nu,
+            r.update(Re_max=(float("nan") if r["prescribed"]
+                             else rhoS*r["far_speed_max"]*2*RADIUS/nu),
                      cpu_s=float(cpu[-1]) if cpu else float("nan"))
             r.update(run=name, model=model,
                      nu=setting(run, "system/caseParameters", "nu"),
                      maxCo=setting(run, "system/controlDict", "maxCo"),
                      forcing=setting(run, "constant/fbmProperties", "forcing"),
+                     coupling=coupling(run, r["prescribed"]),
                      R_over_h=0.125/h)
             rows.append(r)
-    cols = ["run", "model", "nu", "maxCo", "forcing", "R_over_h", "U_max",
+    cols = ["run", "model", "nu", "maxCo", "forcing", "coupling",
+            "R_over_h", "U_max",
             "dt", "records", "mean_drag", "noise_pct", "peak_over_crossing",
             "steps_per_crossing", "crossing_avg_noise_pct",
             "velocity_noise_pct", "Re_max", "cpu_s"]
@@ -128,7 +153,8 @@ def main(runsDir, out):
     with open(out, "w") as f:
         f.write(",".join(cols) + "\n")
         for r in rows:
-            f.write(",".join(fmt.get(c, "%s") % r[c] for c in cols) + "\n")
+            f.write(",".join("" if isinstance(r[c], float) and math.isnan(r[c])
+                             else fmt.get(c, "%s") % r[c] for c in cols) + "\n")
     print(open(out).read())
     return 0
 
