@@ -64,7 +64,7 @@ int main(int argc, char *argv[])
         UEqn0.H()().primitiveField()/UEqn0.A()().primitiveField()
     );
     const bool linear =
-        (fb.fb().forcing() == fbm::fictitiousBoundary::forcingType::linearProfile);
+        (fb.fb().forcing().type() == "linearProfile");
 
     // Expected weight of the blend in a cell
     const lduMatrix& m0 = UEqn0;
@@ -130,7 +130,7 @@ int main(int argc, char *argv[])
     }
 
     Info<< "body " << b.name() << ": U " << b.U() << " omega " << b.omega()
-        << ", forcing " << fbm::fictitiousBoundary::forcingTypeNames[fb.fb().forcing()]
+        << ", forcing " << fb.fb().forcing().type()
         << ": " << nInside << " fully forced cells, " << nCut
         << " blended cells" << nl;
 

@@ -155,7 +155,7 @@ Foam::fbm::bodySystem::bodySystem(const fvMesh& mesh)
 
     Info<< "fbm: " << bodies_.size() << " bodies, rhoFluid " << rhoFluid_
         << ", forcing "
-        << fictitiousBoundary::forcingTypeNames[fb_.forcing()]
+        << fb_.forcing().type()
         << ", coupling " << coupling_->description().c_str()
         << ", nSubdivision " << fb_.nSubdivision()
         << ", penaltyMax " << fb_.penaltyMax() << nl;

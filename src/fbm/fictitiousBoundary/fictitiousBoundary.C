@@ -16,22 +16,8 @@ License
 #include "fvMatrices.H"
 #include "HashSet.H"
 #include "Random.H"
-#include "syncTools.H"
 #include "unitConversion.H"
 #include "mathematicalConstants.H"
-
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum
-<
-    Foam::fbm::fictitiousBoundary::forcingType
->
-Foam::fbm::fictitiousBoundary::forcingTypeNames
-({
-    { forcingType::volumeFraction, "volumeFraction" },
-    { forcingType::linearProfile, "linearProfile" },
-});
-
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -110,50 +96,6 @@ Foam::tmp<Foam::scalarField> Foam::fbm::fictitiousBoundary::serialDiagonal
 }
 
 
-Foam::scalar Foam::fbm::fictitiousBoundary::insideWeight
-(
-    const fvMatrix<vector>& UEqn,
-    const label celli
-) const
-{
-    const label nInternal = mesh_.nInternalFaces();
-    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-    const labelUList& own = mesh_.faceOwner();
-    const labelUList& nei = mesh_.faceNeighbour();
-    const scalarField& upper = UEqn.upper();
-    const scalarField& lower = UEqn.lower();
-
-    scalar S = 0;
-    for (const label facei : mesh_.cells()[celli])
-    {
-        if (facei < nInternal)
-        {
-            const bool isOwner = (own[facei] == celli);
-            const label nbr = isOwner ? nei[facei] : own[facei];
-            if (distance_[nbr] <= 0)
-            {
-                const scalar aN = -(isOwner ? upper[facei] : lower[facei]);
-                S += max(aN, scalar(0))*(-distance_[nbr]);
-            }
-        }
-        else if (coupled_)
-        {
-            // The neighbour on the other side of a coupled face: its
-            // coefficient is in boundaryCoeffs
-            const label patchi = patches.whichPatch(facei);
-            const scalar dN = nbrDistance_[facei - nInternal];
-            if (patches[patchi].coupled() && dN <= 0)
-            {
-                const scalar aN = UEqn.boundaryCoeffs()[patchi]
-                    [facei - patches[patchi].start()].component(0);
-                S += max(aN, scalar(0))*(-dN);
-            }
-        }
-    }
-    return S;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::fictitiousBoundary::fictitiousBoundary
@@ -165,7 +107,6 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary
 :
     mesh_(mesh),
     bodies_(bodies),
-    forcing_(forcingTypeNames.get("forcing", dict)),
     nSubdivision_
     (
         dict.getCheckOrDefault<label>
@@ -173,13 +114,22 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary
             "nSubdivision", 4, [](label n){ return n >= 0 && n <= 10; }
         )
     ),
-    penaltyMax_
+    coupled_
     (
-        dict.getCheckOrDefault<scalar>
+        returnReduce
         (
-            "penaltyMax", 1e6, [](scalar k){ return k >= 10; }
+            [&mesh]()
+            {
+                for (const polyPatch& pp : mesh.boundaryMesh())
+                {
+                    if (pp.coupled()) return true;
+                }
+                return false;
+            }(),
+            orOp<bool>()
         )
     ),
+    forcing_(velocityForcing::New(mesh, dict, coupled_)),
     cellBb_(mesh.nCells()),
     cellTree_(),
     alpha_
@@ -222,23 +172,6 @@ Foam::fbm::fictitiousBoundary::fictitiousBoundary
         dimensionedScalar("bodyID", dimless, -1)
     ),
     activeCells_(),
-    distance_(mesh.nCells(), GREAT),
-    coupled_
-    (
-        returnReduce
-        (
-            [&mesh]()
-            {
-                for (const polyPatch& pp : mesh.boundaryMesh())
-                {
-                    if (pp.coupled()) return true;
-                }
-                return false;
-            }(),
-            orOp<bool>()
-        )
-    ),
-    nbrDistance_(mesh.nFaces() - mesh.nInternalFaces(), GREAT),
     lambda_(mesh.nCells(), Zero)
 {
     buildCellTree();
@@ -393,17 +326,15 @@ void Foam::fbm::fictitiousBoundary::update()
     scalarField& alpha = alpha_.primitiveFieldRef();
     vectorField& Us = Us_.primitiveFieldRef();
     scalarField& id = bodyID_.primitiveFieldRef();
+    forcing_->clear(activeCells_);
     for (const label celli : activeCells_)
     {
         alpha[celli] = 0;
         Us[celli] = Zero;
         id[celli] = -1;
-        distance_[celli] = GREAT;
         lambda_[celli] = 0;
     }
 
-    const vectorField& C = mesh_.C();
-    const labelListList& cellCells = mesh_.cellCells();
     labelHashSet active;
 
     forAll(bodies_, bi)
@@ -411,94 +342,19 @@ void Foam::fbm::fictitiousBoundary::update()
         body& b = bodies_[bi];
         b.updateCells(mesh_, *cellTree_, cellBb_, nSubdivision_);
 
+        // The forcing marks the body's cells against the fractions of the
+        // bodies before it
+        forcing_->mark(b, bi, alpha, Us, id, active);
+
         const labelList& cells = b.cells();
         const scalarList& a = b.alpha();
         forAll(cells, i)
         {
-            const label celli = cells[i];
-            if (forcing_ == forcingType::volumeFraction)
-            {
-                // The body with the largest fraction gives u_s
-                if (a[i] > alpha[celli])
-                {
-                    Us[celli] = b.velocityAt(C[celli]);
-                    id[celli] = bi;
-                }
-                active.insert(celli);
-            }
-            alpha[celli] = min(alpha[celli] + a[i], scalar(1));
-        }
-
-        if (forcing_ == forcingType::linearProfile)
-        {
-            // Cells with the centre inside and their face neighbours; the
-            // nearest surface gives u_s
-            const bodyShape& shape = b.shape();
-            auto mark = [&](const label celli, const scalar d)
-            {
-                if (d < distance_[celli])
-                {
-                    distance_[celli] = d;
-                    Us[celli] = b.velocityAt(C[celli]);
-                    id[celli] = bi;
-                }
-                active.insert(celli);
-            };
-
-            for (const label celli : cells)
-            {
-                const scalar d = shape.signedDistance(C[celli] - b.centre());
-                if (d <= 0)
-                {
-                    mark(celli, d);
-                    for (const label nbr : cellCells[celli])
-                    {
-                        mark
-                        (
-                            nbr,
-                            shape.signedDistance(C[nbr] - b.centre())
-                        );
-                    }
-                }
-            }
+            alpha[cells[i]] = min(alpha[cells[i]] + a[i], scalar(1));
         }
     }
 
-    if (forcing_ == forcingType::linearProfile && coupled_)
-    {
-        // Face neighbours across coupled (processor, cyclic) patches of
-        // inside cells: this side knows them from the other side's
-        // distance and body index
-        scalarField nbrId;
-        syncTools::swapBoundaryCellList(mesh_, distance_, nbrDistance_);
-        syncTools::swapBoundaryCellList(mesh_, id, nbrId);
-
-        const label nInternal = mesh_.nInternalFaces();
-        for (const polyPatch& pp : mesh_.boundaryMesh())
-        {
-            if (!pp.coupled()) continue;
-
-            const labelUList& faceCells = pp.faceCells();
-            forAll(faceCells, i)
-            {
-                const label bFacei = pp.start() + i - nInternal;
-                if (nbrDistance_[bFacei] > 0) continue;
-
-                const label celli = faceCells[i];
-                const label bj = label(nbrId[bFacei]);
-                const body& b = bodies_[bj];
-                const scalar d =
-                    b.shape().signedDistance(C[celli] - b.centre());
-                if (d < distance_[celli])
-                {
-                    distance_[celli] = d;
-                    Us[celli] = b.velocityAt(C[celli]);
-                    id[celli] = bj;
-                }
-                active.insert(celli);
-            }
-        }
-    }
+    forcing_->markCoupled(bodies_, Us, id, active);
 
     activeCells_ = active.sortedToc();
 
@@ -555,18 +411,8 @@ void Foam::fbm::fictitiousBoundary::constrain
             continue;
         }
 
-        scalar k = penaltyMax_;
-        if (forcing_ == forcingType::volumeFraction)
-        {
-            const scalar a = alpha[celli];
-            k = (a < 1) ? min(a/(1 - a), penaltyMax_) : penaltyMax_;
-        }
-        else if (distance_[celli] > 0)
-        {
-            // S/(d a_P) for a fluid cell beside inside cells
-            const scalar S = insideWeight(UEqn, celli)/aPs[celli];
-            k = (S > 0) ? min(S/distance_[celli], penaltyMax_) : 0;
-        }
+        const scalar k =
+            forcing_->penaltyFactor(UEqn, aPs, celli, alpha[celli]);
         lambda_[celli] = k*aPs[celli];
 
         diag[celli] += lambda_[celli];
