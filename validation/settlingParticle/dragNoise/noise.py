@@ -73,7 +73,8 @@ def analyse(path, h):
     t, Fy, Uy = d[:, 0], d[:, 2], d[:, 11]
     speed = np.hypot(d[:, 10], d[:, 11])
     uMax = speed.max()
-    if speed.min() > (1 - 1e-6)*uMax:
+    prescribed = speed.min() > (1 - 1e-6)*uMax
+    if prescribed:
         # A prescribed constant speed: after 6 d of travel, while at least
         # d from the bottom
         idx = np.where((t*uMax >= 12*RADIUS) & far)[0]
@@ -94,7 +95,7 @@ def analyse(path, h):
     avg = np.convolve(f, np.ones(n)/n, mode="valid")
     vdev = deviation(Uy[seg], HALF)
     return {
-        "prescribed": speed.min() > (1 - 1e-6)*uMax,
+        "prescribed": prescribed,
         "far_speed_max": speed[far].max(),
         "U_max": uMax,
         "dt": dt,

@@ -77,6 +77,27 @@ Foam::scalar Foam::fbm::velocityForcings::linearProfile::insideWeight
 }
 
 
+void Foam::fbm::velocityForcings::linearProfile::markNearer
+(
+    const body& b,
+    const label bi,
+    const label celli,
+    const scalar d,
+    vectorField& Us,
+    scalarField& id,
+    labelHashSet& active
+)
+{
+    if (d < distance_[celli])
+    {
+        distance_[celli] = d;
+        Us[celli] = b.velocityAt(mesh_.C()[celli]);
+        id[celli] = bi;
+    }
+    active.insert(celli);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fbm::velocityForcings::linearProfile::linearProfile
@@ -122,26 +143,19 @@ void Foam::fbm::velocityForcings::linearProfile::mark
 
     // Cells with the centre inside and their face neighbours; the nearest
     // surface gives u_s
-    auto nearer = [&](const label celli, const scalar d)
-    {
-        if (d < distance_[celli])
-        {
-            distance_[celli] = d;
-            Us[celli] = b.velocityAt(C[celli]);
-            id[celli] = bi;
-        }
-        active.insert(celli);
-    };
-
     for (const label celli : b.cells())
     {
         const scalar d = shape.signedDistance(C[celli] - b.centre());
         if (d <= 0)
         {
-            nearer(celli, d);
+            markNearer(b, bi, celli, d, Us, id, active);
             for (const label nbr : cellCells[celli])
             {
-                nearer(nbr, shape.signedDistance(C[nbr] - b.centre()));
+                markNearer
+                (
+                    b, bi, nbr, shape.signedDistance(C[nbr] - b.centre()),
+                    Us, id, active
+                );
             }
         }
     }
@@ -183,14 +197,11 @@ void Foam::fbm::velocityForcings::linearProfile::markCoupled
             const label celli = faceCells[i];
             const label bj = label(nbrId[bFacei]);
             const body& b = bodies[bj];
-            const scalar d = b.shape().signedDistance(C[celli] - b.centre());
-            if (d < distance_[celli])
-            {
-                distance_[celli] = d;
-                Us[celli] = b.velocityAt(C[celli]);
-                id[celli] = bj;
-            }
-            active.insert(celli);
+            markNearer
+            (
+                b, bj, celli, b.shape().signedDistance(C[celli] - b.centre()),
+                Us, id, active
+            );
         }
     }
 }
