@@ -82,9 +82,10 @@ def morison(t, F):
 
 def method(run):
     """fbm (lagged momentum predictor), fbm-extrap (extrapolated
-    predictor), fbm-dt2 (half the step) or bodyFitted"""
+    predictor), fbm-dt2 (half the step), fbm-vf (extrapolated, forcing
+    volumeFraction) or bodyFitted"""
     m = run.split("-")[0]
-    for suffix in ("-dt2", "-extrap"):
+    for suffix in ("-dt2", "-extrap", "-vf"):
         if run.endswith(suffix):
             m += suffix
     return m
@@ -139,7 +140,7 @@ for r in runs:
         row["rmsError_pct"] = 100*math.sqrt(np.mean((F[m] - Fi)**2))/ampRef
     rows.append(row)
 rows += [row for r, row in old.items() if r not in runs and r != "run"]
-order = ["bodyFitted", "fbm", "fbm-dt2", "fbm-extrap"]
+order = ["bodyFitted", "fbm", "fbm-dt2", "fbm-extrap", "fbm-vf"]
 rows.sort(key=lambda row: (order.index(row["method"]) if row["method"] in order
                            else len(order), row["level"], row["run"]))
 
@@ -156,7 +157,8 @@ with open("table.md", "w") as out:
     out.write("In-line force per unit length over the second period "
               "(5 <= t <= 10); errors against %s; fbm: lagged momentum "
               "predictor, -extrap: extrapolated (extrapolatePredictor yes, "
-              "minIter 10)%s\n\n" % (ref, "; *: not rerun, the row of the "
+              "minIter 10), both forcing linearProfile; -vf: extrapolated, forcing "
+              "volumeFraction%s\n\n" % (ref, "; *: not rerun, the row of the "
               "earlier results.csv" if any(row["rerun"] == "kept" for row in rows)
               else ""))
     out.write("| run | cells | steps | CPU s | peak amplitude | first harmonic "
@@ -194,10 +196,12 @@ if ref:
     fig, axs = plt.subplots(1, 2, figsize=(10, 4))
     labels = {"fbm": "fbm, lagged predictor", "fbm-dt2": "fbm lagged, half step",
               "fbm-extrap": "fbm, extrapolated predictor",
+              "fbm-vf": "fbm, extrapolated, volumeFraction",
               "bodyFitted": "bodyFitted"}
     for ax, key, name in ((axs[0], "amp1Error_pct", "|first-harmonic error| [%]"),
                           (axs[1], "rmsError_pct", "rms force error [% of peak amplitude]")):
-        for m, mk in (("fbm", "o-"), ("fbm-extrap", "D-"), ("fbm-dt2", "^"),
+        for m, mk in (("fbm", "o-"), ("fbm-extrap", "D-"), ("fbm-vf", "v-"),
+                      ("fbm-dt2", "^"),
                       ("bodyFitted", "s-")):
             rr = [row for row in rows if row["method"] == m and row["run"] != ref
                   and key in row]
@@ -210,9 +214,9 @@ if ref:
         ax.set_ylabel(name)
         ax.yaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
         ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-        ax.set_yticks([0.5, 1, 2, 5, 10])
+        ax.set_yticks([0.2, 0.5, 1, 2, 5, 10])
         ax.grid(alpha=0.3, which="both")
-    axs[0].legend(fontsize=8)
+    axs[1].legend(fontsize=7, loc="lower left")
     fig.suptitle("Force errors against %s (the finest body-fitted run)" % ref,
                  fontsize=10)
     fig.tight_layout()
