@@ -19,6 +19,11 @@ bottom):
 - crossing_avg_noise_pct: the same noise after the drag is averaged over
   one cell crossing (a running mean over steps_per_crossing records);
 - velocity_noise_pct: the noise of the disk's vertical velocity, in % of it;
+- phase_share: the share of the noise's variance that a function of the
+  disk's place in its cell explains (least squares on harmonics 1-3 of the
+  front pole's position in its cell, (y - R)/h modulo 1): near 1 for a
+  force that varies smoothly with that place, lower for an impulse that
+  lands in one step at a place set by the step;
 - Re_max: rho_s max|U| d/mu while the disk is at least d from the bottom,
   as validation/settlingParticle/plotResults.py takes it (empty for a disk
   moved at a prescribed speed);
@@ -94,6 +99,13 @@ def analyse(path, h):
     n = max(1, int(round(per)))
     avg = np.convolve(f, np.ones(n)/n, mode="valid")
     vdev = deviation(Uy[seg], HALF)
+    # The part of the noise that is a function of the front pole's place in
+    # its cell
+    phase = 2*math.pi*(((d[seg, 8] - RADIUS)/h) % 1.0)[HALF:len(f) - HALF]
+    A = np.column_stack([np.ones_like(phase)]
+                        + [g(k*phase) for k in (1, 2, 3) for g in (np.cos, np.sin)])
+    c, *_ = np.linalg.lstsq(A, dev, rcond=None)
+    phaseShare = 1 - ((dev - A @ c)**2).sum()/((dev - dev.mean())**2).sum()
     return {
         "prescribed": prescribed,
         "far_speed_max": speed[far].max(),
@@ -108,6 +120,7 @@ def analyse(path, h):
             100*math.sqrt((deviation(avg, HALF)**2).mean())/mean,
         "velocity_noise_pct":
             100*math.sqrt((vdev**2).mean())/np.abs(Uy[seg]).mean(),
+        "phase_share": phaseShare,
     }
 
 
@@ -145,11 +158,12 @@ def main(runsDir, out):
             "R_over_h", "U_max",
             "dt", "records", "mean_drag", "noise_pct", "peak_over_crossing",
             "steps_per_crossing", "crossing_avg_noise_pct",
-            "velocity_noise_pct", "Re_max", "cpu_s"]
+            "velocity_noise_pct", "phase_share", "Re_max", "cpu_s"]
     fmt = {"U_max": "%.4g", "dt": "%.3g", "mean_drag": "%.4g",
            "noise_pct": "%.3g", "peak_over_crossing": "%.2f",
            "steps_per_crossing": "%.2f", "crossing_avg_noise_pct": "%.3g",
-           "velocity_noise_pct": "%.2g", "R_over_h": "%g",
+           "velocity_noise_pct": "%.2g", "phase_share": "%.2f",
+           "R_over_h": "%g",
            "Re_max": "%.4g", "cpu_s": "%.1f"}
     with open(out, "w") as f:
         f.write(",".join(cols) + "\n")
