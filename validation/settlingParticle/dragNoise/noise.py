@@ -21,9 +21,10 @@ bottom):
 - velocity_noise_pct: the noise of the disk's vertical velocity, in % of it;
 - phase_share: the share of the noise's variance that a function of the
   disk's place in its cell explains (least squares on harmonics 1-3 of the
-  front pole's position in its cell, (y - R)/h modulo 1): near 1 for a
-  force that varies smoothly with that place, lower for an impulse that
-  lands in one step at a place set by the step;
+  front pole's position in its cell, (y - R)/h modulo 1): near 1 where the
+  noise is a function of that place, as a smooth variation is and as an
+  impulse that lands where the step puts the disk is too (it does not tell
+  them apart);
 - Re_max: rho_s max|U| d/mu while the disk is at least d from the bottom,
   as validation/settlingParticle/plotResults.py takes it (empty for a disk
   moved at a prescribed speed);
